@@ -1,0 +1,27 @@
+// The browser client's entry point: today the lobby's status line and the table view.
+import { tableSpec } from '../shared/physics/index.ts';
+import { drawTable } from './table-view.ts';
+
+interface Health {
+  ok: boolean;
+  version: string;
+  schema: number;
+}
+
+async function showServerStatus(el: HTMLElement): Promise<void> {
+  try {
+    const res = await fetch('/healthz', { cache: 'no-store' });
+    const health = (await res.json()) as Health;
+    if (!res.ok || !health.ok) throw new Error(`server answered ${res.status}`);
+    el.textContent = `Server online: baize ${health.version}, schema ${health.schema}`;
+    el.className = 'ok';
+  } catch (err) {
+    el.textContent = `Server unreachable: ${(err as Error).message}`;
+    el.className = 'error';
+  }
+}
+
+const status = document.getElementById('server-status');
+if (status) void showServerStatus(status);
+const canvas = document.getElementById('table');
+if (canvas instanceof HTMLCanvasElement) drawTable(canvas, tableSpec('pool-9ft'));

@@ -1,0 +1,84 @@
+// The server: database, HTTP and WebSocket on one port, and a clean stop.
+import { createServer } from 'node:http';
+import type { AddressInfo } from 'node:net';
+import { WebSocketServer } from 'ws';
+import type { Config } from './config.ts';
+import { openDatabase } from './database.ts';
+import { createRequestHandler } from './http-routes.ts';
+import { schemaVersion } from './migrate.ts';
+import { loadStaticFiles } from './static-files.ts';
+import { VERSION } from './version.ts';
+
+export interface RunningServer {
+  /** http://host:port with the port actually bound (PORT=0 picks a free one). */
+  readonly url: string;
+  readonly port: number;
+  readonly schema: number;
+  readonly migrationsApplied: readonly string[];
+  /** Stops taking connections, closes the open ones and the database. Idempotent. */
+  close(): Promise<void>;
+}
+
+export class PortInUseError extends Error {
+  override readonly name = 'PortInUseError';
+  constructor(host: string, port: number) {
+    super(`port ${port} on ${host} is already in use: stop the other server or set PORT`);
+  }
+}
+
+/** Largest WebSocket message accepted, in bytes: anything larger closes the connection (1009). */
+export const MAX_MESSAGE_BYTES = 64 * 1024;
+
+export async function startServer(config: Config): Promise<RunningServer> {
+  const { db, applied } = openDatabase(config.dbPath, config.migrationsDir);
+  const files = loadStaticFiles(config.clientDir);
+  const http = createServer(createRequestHandler(files, () => ({ ok: db.open, version: VERSION, schema: schemaVersion(db) })));
+  try {
+    await new Promise<void>((resolve, reject) => {
+      const onError = (err: NodeJS.ErrnoException) => {
+        reject(err.code === 'EADDRINUSE' ? new PortInUseError(config.host, config.port) : err);
+      };
+      http.once('error', onError);
+      http.listen(config.port, config.host, () => {
+        http.off('error', onError);
+        resolve();
+      });
+    });
+  } catch (err) {
+    db.close();
+    throw err;
+  }
+
+  // Attached only once listening: a WebSocketServer re-emits its HTTP server's errors.
+  const wss = new WebSocketServer({ server: http, path: '/ws', maxPayload: MAX_MESSAGE_BYTES });
+  wss.on('connection', (socket) => {
+    socket.send(JSON.stringify({ type: 'hello', version: VERSION }));
+  });
+
+  const { port } = http.address() as AddressInfo;
+  const hostInUrl = config.host.includes(':') ? `[${config.host}]` : config.host;
+  let closing: Promise<void> | undefined;
+  return {
+    url: `http://${hostInUrl}:${port}`,
+    port,
+    schema: schemaVersion(db),
+    migrationsApplied: applied,
+    close() {
+      closing ??= new Promise<void>((resolve) => {
+        for (const socket of wss.clients) socket.close(1001, 'server shutting down');
+        wss.close();
+        http.close(() => {
+          db.close();
+          resolve();
+        });
+        http.closeIdleConnections();
+        // Sockets that do not finish their close handshake promptly are cut.
+        setTimeout(() => {
+          for (const socket of wss.clients) socket.terminate();
+          http.closeAllConnections();
+        }, 1000).unref();
+      });
+      return closing;
+    },
+  };
+}

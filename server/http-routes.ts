@@ -1,0 +1,51 @@
+// Plain HTTP: the client's files and /healthz. Everything else is 404.
+import type { IncomingMessage, ServerResponse } from 'node:http';
+import type { StaticFile } from './static-files.ts';
+
+export interface Health {
+  readonly ok: boolean;
+  readonly version: string;
+  readonly schema: number;
+}
+
+export function createRequestHandler(files: ReadonlyMap<string, StaticFile>, health: () => Health) {
+  return (req: IncomingMessage, res: ServerResponse): void => {
+    const path = (req.url ?? '/').split('?', 1)[0] ?? '/';
+    if (req.method !== 'GET' && req.method !== 'HEAD') {
+      send(res, 405, 'application/json', JSON.stringify({ error: 'method not allowed' }), { allow: 'GET, HEAD' });
+      return;
+    }
+    if (path === '/healthz') {
+      let body: Health;
+      try {
+        body = health();
+      } catch (err) {
+        body = { ok: false, version: '', schema: -1 };
+        send(res, 503, 'application/json', JSON.stringify({ ...body, error: (err as Error).message }));
+        return;
+      }
+      send(res, body.ok ? 200 : 503, 'application/json', JSON.stringify(body), { 'cache-control': 'no-store' });
+      return;
+    }
+    const file = files.get(path);
+    if (file) {
+      send(res, 200, file.contentType, file.body);
+      return;
+    }
+    if (path === '/') {
+      send(res, 503, 'text/plain; charset=utf-8', 'client not built: run `npm run build`\n');
+      return;
+    }
+    send(res, 404, 'application/json', JSON.stringify({ error: 'not found' }));
+  };
+}
+
+function send(res: ServerResponse, status: number, type: string, body: string | Buffer, headers: Record<string, string> = {}): void {
+  res.writeHead(status, {
+    'content-type': type,
+    'content-length': Buffer.byteLength(body),
+    'x-content-type-options': 'nosniff',
+    ...headers,
+  });
+  res.end(res.req.method === 'HEAD' ? undefined : body);
+}
