@@ -114,7 +114,7 @@ export function freeAlongX(
   limit: number,
   clear = false,
 ): number | null {
-  const d = 2 * spec.ballRadius + (clear ? EPS : -EPS);
+  const d = 2 * spec.ballRadius + (clear ? EPS : 0);
   const intervals: Array<[number, number]> = [];
   for (const b of balls) {
     const dy = b.y - y0;
