@@ -209,7 +209,7 @@ export function placeCueBall(game: Game, player: PlayerId, p: Point): Game {
   const problem = placementProblem(specOfGame(game), game.balls, id, p, game.ballInHand);
   if (problem) throw new RuleError('bad-placement', `cannot place the cue ball: ${problem}`);
   const g = clone(game);
-  g.balls = [{ id, x: p.x, y: p.y }, ...g.balls.filter((b) => b.id !== id)];
+  g.balls = [{ id, x: p.x + 0, y: p.y + 0 }, ...g.balls.filter((b) => b.id !== id)];
   return g;
 }
 

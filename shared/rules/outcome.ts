@@ -97,7 +97,8 @@ export function readOutcome(before: readonly Ball[], struck: string, outcome: Ou
   for (const b of before) {
     if (potted.has(b.id)) continue;
     const f = final.get(b.id);
-    remaining.push(f ? { id: b.id, x: f.x, y: f.y } : { id: b.id, x: b.x, y: b.y });
+    // + 0 turns -0 into 0: the Game stays the same through JSON.
+    remaining.push(f ? { id: b.id, x: f.x + 0, y: f.y + 0 } : { id: b.id, x: b.x, y: b.y });
   }
   return { events, firstHit, firstHitT, cushionAfterContact, pots, ballsToCushion, remaining };
 }

@@ -130,7 +130,7 @@ export function setPracticeBalls(g: PracticeGame, player: PlayerId, balls: reado
   assertPlayerOnTurn(g, player);
   checkLayout(specOfGame(g), g.table, balls);
   pushStep(g, null);
-  g.balls = balls.map((b) => ({ id: b.id, x: b.x, y: b.y }));
+  g.balls = balls.map((b) => ({ id: b.id, x: b.x + 0, y: b.y + 0 })); // + 0: no -0 in the Game
   g.ballInHand = false;
 }
 
