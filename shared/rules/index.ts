@@ -199,8 +199,13 @@ export function applyShot(game: Game, shot: Shot, outcome: Outcome): Game {
 /**
  * Place the cue ball in hand at p: the player must be on turn, the ball in hand, and p on the bed,
  * inside the area (`game.ballInHand`: anywhere, the kitchen, the D) and clear of other balls.
+ * placeCueBall(game, p) places it for the player on turn.
  */
-export function placeCueBall(game: Game, player: PlayerId, p: Point): Game {
+export function placeCueBall(game: Game, player: PlayerId, p: Point): Game;
+export function placeCueBall(game: Game, p: Point): Game;
+export function placeCueBall(game: Game, playerOrPoint: PlayerId | Point, point?: Point): Game {
+  const player = typeof playerOrPoint === 'string' ? playerOrPoint : game.turn;
+  const p = typeof playerOrPoint === 'string' ? point : playerOrPoint;
   assertNotOver(game);
   assertPlayerOnTurn(game, player);
   if (game.ballInHand === false) throw new RuleError('not-in-hand', `the cue ball is not in hand for ${player}`);

@@ -279,6 +279,8 @@ describe('nine-ball play (WPA 2.5-2.8, 6.1-6.3)', () => {
     expectRuleError(() => placeCueBall(g, 'ann', { x: 0, y: 0 }), 'bad-placement');
     const ok = placeCueBall(g, 'ann', { x: -0.9, y: 0.3 });
     expect(ok.balls.find((b) => b.id === 'cue')).toEqual({ id: 'cue', x: -0.9, y: 0.3 });
+    // the short form places it for the player on turn
+    expect(placeCueBall(g, { x: -0.9, y: -0.3 }).balls.find((b) => b.id === 'cue')).toEqual({ id: 'cue', x: -0.9, y: -0.3 });
   });
 
   it('a race to two: the other player breaks the next rack', () => {
