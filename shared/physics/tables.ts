@@ -1,8 +1,35 @@
-// Table and ball specifications. Lengths in metres, masses in kilograms.
-// The playing area is measured between the cushion noses; the origin is its centre,
-// x along the long side (see ../shared/physics.md, "Units and frames").
+// Table and ball specifications, with the physical constants in use. Lengths in metres, masses in
+// kilograms. The playing area is measured between the cushion noses; the origin is its centre,
+// x along the long side (../shared/physics.md, "Units and frames").
+import { buildOutline, type Cushion, type Pocket, type PocketShape } from './table-geometry.ts';
 
 export type TableName = 'pool-9ft' | 'snooker-12ft' | 'carom-match';
+
+/** Ball-cloth constants (Alciatore, "Pool and billiards physics resources", typical values). */
+export interface ClothSpec {
+  readonly muSlide: number;
+  readonly muRoll: number;
+  /** Deceleration of spin about the vertical (rad/s^2). */
+  readonly spinDecel: number;
+}
+
+/** Ball-ball constants: restitution and the friction law μ(v) = a + b e^(-c v) (Alciatore A-14). */
+export interface BallBallSpec {
+  readonly restitution: number;
+  readonly frictionA: number;
+  readonly frictionB: number;
+  readonly frictionC: number;
+}
+
+/** Ball-cushion constants for the Mathavan 2010 impact. */
+export interface CushionSpec {
+  /** Height of the cushion nose above the cloth (m), in (R, 2R). */
+  readonly height: number;
+  /** Work restitution e_e. */
+  readonly restitution: number;
+  /** Ball-cushion friction μ_w. */
+  readonly friction: number;
+}
 
 export interface TableSpec {
   readonly name: TableName;
@@ -12,42 +39,97 @@ export interface TableSpec {
   readonly width: number;
   readonly ballRadius: number;
   readonly ballMass: number;
-  /** Height of the cushion nose above the cloth (m); must lie in (R, 2R). */
+  /** Height of the cushion nose above the cloth (m); the same as cushion.height. */
   readonly cushionHeight: number;
+  readonly g: number;
+  readonly cloth: ClothSpec;
+  readonly ballBall: BallBallSpec;
+  readonly cushion: CushionSpec;
+  /** Pocket drop circles, with ids as the referees use them (BL, BR, ML, MR, TL, TR). */
+  readonly pockets: readonly Pocket[];
+  /** The cushion outline: rails, jaw noses, jaw faces. */
+  readonly cushions: readonly Cushion[];
 }
 
-// WPA equipment specifications, 9-ft table: playing surface 100 x 50 in (2.54 x 1.27 m),
-// balls 2.25 in (57.15 mm), 5.5-6 oz (about 0.17 kg); cushion nose at 63.5% of the ball diameter.
-const POOL: TableSpec = {
-  name: 'pool-9ft',
-  length: 2.54,
-  width: 1.27,
-  ballRadius: 0.028575,
-  ballMass: 0.17,
-  cushionHeight: 0.635 * 0.05715,
-};
+const G = 9.81;
 
-// WPBSA official table specification: playing area 3569 x 1778 mm, balls 52.5 mm, about 142 g.
-// Cushion nose height: Mathavan et al. 2010 use h = 7R/5 for snooker cushions.
-const SNOOKER: TableSpec = {
-  name: 'snooker-12ft',
-  length: 3.569,
-  width: 1.778,
-  ballRadius: 0.02625,
-  ballMass: 0.1406,
-  cushionHeight: 0.02625 * 1.4,
-};
+// Alciatore's fit to measured ball-ball friction (technical proof A-14): μ(v) = 9.951e-3 + 0.108 e^(-1.088 v).
+const PHENOLIC: BallBallSpec = { restitution: 0.95, frictionA: 9.951e-3, frictionB: 0.108, frictionC: 1.088 };
+// Typical cloth (../shared/physics.md): μ_slide 0.2, μ_roll 0.01, spin deceleration 10 rad/s^2.
+const CLOTH: ClothSpec = { muSlide: 0.2, muRoll: 0.01, spinDecel: 10 };
 
-// UMB carom match table: playing area 2.84 x 1.42 m, balls 61.0-61.5 mm, 205-220 g.
-// Cushion nose height 37 mm (UMB: 37 mm +/- 1 mm).
-const CAROM: TableSpec = {
+// cos and sin of the jaw angles, written out because shared/ uses no Math.cos.
+const COS_142 = -0.788010753606722;
+const SIN_142 = 0.6156614753256583;
+const COS_104 = -0.24192189559966773;
+const SIN_104 = 0.9702957262759965;
+const COS_135 = -0.7071067811865476;
+const SIN_135 = 0.7071067811865476;
+const COS_100 = -0.17364817766693033;
+const SIN_100 = 0.984807753012208;
+
+function table(
+  base: Omit<TableSpec, 'pockets' | 'cushions' | 'cushionHeight'>,
+  corner?: PocketShape,
+  middle?: PocketShape,
+): TableSpec {
+  const outline = buildOutline(base.length, base.width, corner, middle);
+  return Object.freeze({ ...base, cushionHeight: base.cushion.height, pockets: outline.pockets, cushions: outline.cushions });
+}
+
+// WPA equipment specifications, 9-ft table: playing surface 100 x 50 in (2.54 x 1.27 m); balls
+// 2.25 in (57.15 mm), 5.5-6 oz (0.17 kg); cushion nose at 62.5-64.5% of the ball diameter; corner
+// pocket mouth 4.5-4.625 in (116 mm used), side 5-5.125 in (128.5 mm used); mouth angles 142°
+// (corner) and 104° (side). Nose radius and face length are not specified: 8 mm and 50/35 mm.
+const POOL = table(
+  {
+    name: 'pool-9ft',
+    length: 2.54,
+    width: 1.27,
+    ballRadius: 0.028575,
+    ballMass: 0.17,
+    g: G,
+    cloth: CLOTH,
+    ballBall: PHENOLIC,
+    cushion: { height: 0.635 * 0.05715, restitution: 0.9, friction: 0.14 },
+  },
+  { mouth: 0.116, cosJaw: COS_142, sinJaw: SIN_142, noseRadius: 0.008, faceLength: 0.05 },
+  { mouth: 0.1285, cosJaw: COS_104, sinJaw: SIN_104, noseRadius: 0.008, faceLength: 0.035 },
+);
+
+// WPBSA official table specification: playing area 3569 x 1778 mm; balls 52.5 mm (Mathavan et al.
+// use 0.1406 kg); cushion nose at h = 7R/5 and e_e 0.98, μ_w 0.14 as in Mathavan et al. 2010.
+// Pocket openings follow the WPBSA templates, about 88 mm at the corners and 106 mm in the
+// middle, with rounded (curved) jaws; the radii and angles here approximate the templates.
+const SNOOKER = table(
+  {
+    name: 'snooker-12ft',
+    length: 3.569,
+    width: 1.778,
+    ballRadius: 0.02625,
+    ballMass: 0.1406,
+    g: G,
+    cloth: { muSlide: 0.212, muRoll: 0.01, spinDecel: 10 },
+    ballBall: PHENOLIC,
+    cushion: { height: 0.02625 * 1.4, restitution: 0.98, friction: 0.14 },
+  },
+  { mouth: 0.088, cosJaw: COS_135, sinJaw: SIN_135, noseRadius: 0.03, faceLength: 0.06 },
+  { mouth: 0.106, cosJaw: COS_100, sinJaw: SIN_100, noseRadius: 0.025, faceLength: 0.045 },
+);
+
+// UMB carom match table: playing area 2.84 x 1.42 m; balls 61-61.5 mm, 205-220 g; cushion nose
+// 37 mm +/- 1 mm above the cloth; no pockets.
+const CAROM = table({
   name: 'carom-match',
   length: 2.84,
   width: 1.42,
   ballRadius: 0.03075,
   ballMass: 0.21,
-  cushionHeight: 0.037,
-};
+  g: G,
+  cloth: CLOTH,
+  ballBall: PHENOLIC,
+  cushion: { height: 0.037, restitution: 0.93, friction: 0.14 },
+});
 
 const TABLES: Readonly<Record<TableName, TableSpec>> = {
   'pool-9ft': POOL,

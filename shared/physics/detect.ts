@@ -1,0 +1,134 @@
+// When: the time of the next contact of a moving ball with another ball, a cushion or a pocket.
+// Every path between events is a parabola p(τ) = p0 + v τ + a τ²/2, so each gap below is a
+// polynomial in τ: a quadratic for a straight cushion, a quartic for a ball, an arc or a pocket
+// (the squared distance between two parabolas). Roots come from roots.ts, which cannot skip one.
+import type { Arc, Pocket, Segment } from './table-geometry.ts';
+import { evalPoly, firstEntry, rootsIn } from './roots.ts';
+
+/** A path relative to now: position, velocity and constant acceleration. */
+export interface Path {
+  x: number;
+  y: number;
+  vx: number;
+  vy: number;
+  ax: number;
+  ay: number;
+}
+
+/** Relative normal speed below which touching bodies count as neither approaching nor parting (m/s). */
+export const CONTACT_SPEED = 1e-9;
+/** Relative normal acceleration below which touching bodies count as not pressed together (m/s^2). */
+export const CONTACT_ACCEL = 1e-9;
+
+/**
+ * The first τ in [0, H] at which the gap polynomial c (positive while apart) closes. When the
+ * bodies already touch (c[0] <= 0, within rounding of a contact just resolved) it is a contact now
+ * if they approach (c[1] < -slopeEps) or, not moving apart, are pressed together
+ * (c[2] < -curvEps); if they part, the search starts where the gap stops growing.
+ */
+export function nextContact(c: readonly number[], H: number, tol: number, slopeEps: number, curvEps: number): number {
+  if (c[0]! > 0) return firstEntry(c, 0, H, tol);
+  const slope = c[1] ?? 0;
+  if (slope < -slopeEps) return 0;
+  if (slope <= slopeEps && (c[2] ?? 0) < -curvEps) return 0;
+  const d: number[] = [];
+  for (let i = 1; i < c.length; i++) d.push(i * c[i]!);
+  for (const turn of rootsIn(d, 0, H)) {
+    if (turn <= 0) continue;
+    return evalPoly(c, turn) > 0 ? firstEntry(c, turn, H, tol) : Infinity;
+  }
+  return Infinity;
+}
+
+/** Squared distance between centres minus dist^2, as a quartic in τ. */
+function distanceQuartic(dx: number, dy: number, dvx: number, dvy: number, dax: number, day: number, dist: number): number[] {
+  return [
+    dx * dx + dy * dy - dist * dist,
+    2 * (dx * dvx + dy * dvy),
+    dvx * dvx + dvy * dvy + dx * dax + dy * day,
+    dvx * dax + dvy * day,
+    0.25 * (dax * dax + day * day),
+  ];
+}
+
+/** Two balls of radius R meet when their centres are 2R apart. */
+export function ballBallTime(a: Path, b: Path, R: number, H: number, tol: number): number {
+  const c = distanceQuartic(b.x - a.x, b.y - a.y, b.vx - a.vx, b.vy - a.vy, b.ax - a.ax, b.ay - a.ay, 2 * R);
+  return nextContact(c, H, tol, 4 * R * CONTACT_SPEED, 2 * R * CONTACT_ACCEL);
+}
+
+/** A ball meets a straight cushion when its centre is R from the nose line, within the segment. */
+export function segmentTime(p: Path, s: Segment, R: number, H: number, tol: number): number {
+  // gap = -(n · (p - A)) - R, positive on the table side.
+  const c = [-(s.nx * (p.x - s.ax) + s.ny * (p.y - s.ay)) - R, -(s.nx * p.vx + s.ny * p.vy), -0.5 * (s.nx * p.ax + s.ny * p.ay)];
+  const t = nextContact(c, H, tol, CONTACT_SPEED, 0.5 * CONTACT_ACCEL);
+  if (t === Infinity) return t;
+  const x = p.x + (p.vx + 0.5 * p.ax * t) * t;
+  const y = p.y + (p.vy + 0.5 * p.ay * t) * t;
+  const ex = s.bx - s.ax;
+  const ey = s.by - s.ay;
+  const along = ((x - s.ax) * ex + (y - s.ay) * ey) / (ex * ex + ey * ey);
+  return along >= 0 && along <= 1 ? t : Infinity;
+}
+
+/** Whether the direction (dx, dy) from an arc's centre lies within its span. */
+export function inArcSpan(arc: Arc, dx: number, dy: number): boolean {
+  if (arc.full) return true;
+  return arc.ux * dy - arc.uy * dx >= 0 && dx * arc.wy - dy * arc.wx >= 0;
+}
+
+/** A ball meets a rounded jaw (or a point, r = 0) when its centre is R + r from the arc's centre. */
+export function arcTime(p: Path, arc: Arc, R: number, H: number, tol: number): number {
+  const c = distanceQuartic(p.x - arc.cx, p.y - arc.cy, p.vx, p.vy, p.ax, p.ay, R + arc.r);
+  const t = nextContact(c, H, tol, 2 * (R + arc.r) * CONTACT_SPEED, (R + arc.r) * CONTACT_ACCEL);
+  if (t === Infinity) return t;
+  const x = p.x + (p.vx + 0.5 * p.ax * t) * t;
+  const y = p.y + (p.vy + 0.5 * p.ay * t) * t;
+  return inArcSpan(arc, x - arc.cx, y - arc.cy) ? t : Infinity;
+}
+
+/** A ball drops when its centre enters the pocket's drop circle. */
+export function pocketTime(p: Path, pocket: Pocket, H: number, tol: number): number {
+  const c = distanceQuartic(p.x - pocket.x, p.y - pocket.y, p.vx, p.vy, p.ax, p.ay, pocket.r);
+  return c[0]! <= 0 ? 0 : firstEntry(c, 0, H, tol);
+}
+
+/** The box a path sweeps over [0, H], grown by `pad`: [minX, minY, maxX, maxY]. */
+export function sweptBox(p: Path, H: number, pad: number, out: Float64Array): Float64Array {
+  let x0 = p.x;
+  let x1 = p.x;
+  let y0 = p.y;
+  let y1 = p.y;
+  const ex = p.x + (p.vx + 0.5 * p.ax * H) * H;
+  const ey = p.y + (p.vy + 0.5 * p.ay * H) * H;
+  x0 = Math.min(x0, ex);
+  x1 = Math.max(x1, ex);
+  y0 = Math.min(y0, ey);
+  y1 = Math.max(y1, ey);
+  // The extremum of each coordinate, where its velocity changes sign.
+  if (p.ax !== 0) {
+    const tx = -p.vx / p.ax;
+    if (tx > 0 && tx < H) {
+      const x = p.x + 0.5 * p.vx * tx;
+      x0 = Math.min(x0, x);
+      x1 = Math.max(x1, x);
+    }
+  }
+  if (p.ay !== 0) {
+    const ty = -p.vy / p.ay;
+    if (ty > 0 && ty < H) {
+      const y = p.y + 0.5 * p.vy * ty;
+      y0 = Math.min(y0, y);
+      y1 = Math.max(y1, y);
+    }
+  }
+  out[0] = x0 - pad;
+  out[1] = y0 - pad;
+  out[2] = x1 + pad;
+  out[3] = y1 + pad;
+  return out;
+}
+
+export function boxesOverlap(a: Float64Array, b: Float64Array): boolean {
+  return a[0]! <= b[2]! && b[0]! <= a[2]! && a[1]! <= b[3]! && b[1]! <= a[3]!;
+}

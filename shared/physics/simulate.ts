@@ -1,0 +1,419 @@
+// The table simulation: one loop that pops the earliest predicted event, applies it to the balls
+// involved, and predicts again only for them (detect.ts says when, ball-collision.ts and the
+// cushion kernel say what, cloth-motion.ts moves the balls in between). Balls at rest cost nothing
+// and effort follows events: nothing steps with the clock.
+import type { BallSample, BallState, Motion } from './ball-state.ts';
+import { collideBalls, type BallBallParams } from './ball-collision.ts';
+import { emptySample, REST_SPEED, sampleAt, startSegment, type ClothParams } from './cloth-motion.ts';
+import { cushionRebound } from './cushion.ts';
+import type { CushionParams } from './cushion-types.ts';
+import { arcTime, ballBallTime, boxesOverlap, CONTACT_ACCEL, CONTACT_SPEED, pocketTime, segmentTime, sweptBox, type Path } from './detect.ts';
+import { EventQueue, Kind, type Prediction } from './event-queue.ts';
+import { hashFinalState } from './hash.ts';
+import type { FinalBall, Outcome, PathSegment, Scene, Shot, SimEvent, SimOptions } from './sim-types.ts';
+import { strikeBall } from './strike.ts';
+import type { TableSpec } from './tables.ts';
+import { validateOptions, validateScene, validateShot } from './validate-input.ts';
+
+/**
+ * A rebound that would take the ball (or two balls) apart by less than this before friction brings
+ * it back is a resting contact: the normal velocity and the spin that drives it back are removed,
+ * which only takes energy away. Without it a sliding ball pressed against a cushion would bounce
+ * ever more often (a Zeno sequence) instead of running along it.
+ */
+export const CREEP_DISTANCE = 1e-4; // m
+
+/** Events per ball beyond which the loop is broken, with an error, never a silent answer. */
+const EVENTS_PER_BALL_LIMIT = 2000;
+
+/** Sets a ball's velocity along n to vn and its spin about t = (n_y, -n_x) to wt. */
+function lockNormal(s: BallSample, nx: number, ny: number, vn: number, wt: number): void {
+  const dv = vn - (s.vx * nx + s.vy * ny);
+  s.vx += dv * nx;
+  s.vy += dv * ny;
+  const dw = wt - (s.wx * ny - s.wy * nx);
+  s.wx += dw * ny;
+  s.wy -= dw * nx;
+}
+
+class Simulation {
+  readonly balls: BallState[];
+  readonly queue = new EventQueue();
+  readonly events: SimEvent[] = [];
+  readonly segments: PathSegment[][];
+  readonly cloth: ClothParams;
+  readonly ballParams: BallBallParams;
+  readonly cushionParams: CushionParams;
+  readonly R: number;
+  private readonly sa: BallSample = emptySample();
+  private readonly sb: BallSample = emptySample();
+  private readonly pathA: Path = { x: 0, y: 0, vx: 0, vy: 0, ax: 0, ay: 0 };
+  private readonly pathB: Path = { x: 0, y: 0, vx: 0, vy: 0, ax: 0, ay: 0 };
+  private readonly boxA = new Float64Array(4);
+  private readonly boxB = new Float64Array(4);
+  private readonly cushionBoxes: Float64Array[];
+  private readonly pocketBoxes: Float64Array[];
+
+  constructor(
+    readonly table: TableSpec,
+    scene: Scene,
+    readonly rootTol: number,
+    readonly cushionTol: SimOptions['cushionTolerance'],
+  ) {
+    this.R = table.ballRadius;
+    this.cloth = { R: this.R, g: table.g, muSlide: table.cloth.muSlide, muRoll: table.cloth.muRoll, spinDecel: table.cloth.spinDecel };
+    this.ballParams = { R: this.R, ...table.ballBall };
+    this.cushionParams = {
+      M: table.ballMass,
+      R: this.R,
+      h: table.cushion.height,
+      ee: table.cushion.restitution,
+      muS: table.cloth.muSlide,
+      muW: table.cushion.friction,
+    };
+    this.balls = scene.balls.map((b, index) => ({
+      id: b.id,
+      index,
+      motion: 'rest' as Motion,
+      t0: 0,
+      x: b.x === 0 ? 0 : b.x,
+      y: b.y === 0 ? 0 : b.y,
+      vx: 0,
+      vy: 0,
+      wx: 0,
+      wy: 0,
+      wz: 0,
+      ax: 0,
+      ay: 0,
+      tEnd: Infinity,
+      version: 0,
+      pocket: undefined,
+    }));
+    this.segments = this.balls.map(() => []);
+    this.cushionBoxes = table.cushions.map((c) => {
+      if (c.kind === 'segment') return new Float64Array([Math.min(c.ax, c.bx), Math.min(c.ay, c.by), Math.max(c.ax, c.bx), Math.max(c.ay, c.by)]);
+      return new Float64Array([c.cx - c.r, c.cy - c.r, c.cx + c.r, c.cy + c.r]);
+    });
+    this.pocketBoxes = table.pockets.map((p) => new Float64Array([p.x - p.r, p.y - p.r, p.x + p.r, p.y + p.r]));
+  }
+
+  private record(b: BallState): void {
+    this.segments[b.index]!.push({ t0: b.t0, motion: b.motion, x: b.x, y: b.y, vx: b.vx, vy: b.vy, wx: b.wx, wy: b.wy, wz: b.wz, ax: b.ax, ay: b.ay });
+  }
+
+  /** Ends b's segment at t with the state s and starts the next one. */
+  private restart(b: BallState, t: number, s: BallSample): void {
+    startSegment(b, t, s, this.cloth);
+    this.record(b);
+  }
+
+  private pathAt(b: BallState, t: number, out: Path): Path {
+    const s = sampleAt(b, t - b.t0, this.cloth, this.sa);
+    out.x = s.x;
+    out.y = s.y;
+    if (b.motion === 'sliding' || b.motion === 'rolling') {
+      out.vx = s.vx;
+      out.vy = s.vy;
+      out.ax = b.ax;
+      out.ay = b.ay;
+    } else {
+      out.vx = 0;
+      out.vy = 0;
+      out.ax = 0;
+      out.ay = 0;
+    }
+    return out;
+  }
+
+  private translating(b: BallState): boolean {
+    return b.motion === 'sliding' || b.motion === 'rolling';
+  }
+
+  /** Predicts b's own next event: a change of motion, a cushion or a pocket. */
+  private predictOwn(b: BallState, t: number): void {
+    if (b.motion === 'rest' || b.motion === 'pocketed') return;
+    let best = b.tEnd - t;
+    let kind: Kind = Kind.Motion;
+    let target = -1;
+    if (this.translating(b)) {
+      const p = this.pathAt(b, t, this.pathA);
+      const H = best;
+      const box = sweptBox(p, H, this.R, this.boxA);
+      const cushions = this.table.cushions;
+      for (let i = 0; i < cushions.length; i++) {
+        if (!boxesOverlap(box, this.cushionBoxes[i]!)) continue;
+        const c = cushions[i]!;
+        const tau = c.kind === 'segment' ? segmentTime(p, c, this.R, H, this.rootTol) : arcTime(p, c, this.R, H, this.rootTol);
+        if (tau < best || (tau === best && kind === Kind.Cushion && i < target)) {
+          best = tau;
+          kind = Kind.Cushion;
+          target = i;
+        }
+      }
+      const pocketBox = sweptBox(p, H, 0, this.boxB);
+      const pockets = this.table.pockets;
+      for (let i = 0; i < pockets.length; i++) {
+        if (!boxesOverlap(pocketBox, this.pocketBoxes[i]!)) continue;
+        const tau = pocketTime(p, pockets[i]!, H, this.rootTol);
+        if (tau <= best) {
+          best = tau;
+          kind = Kind.Pocket;
+          target = i;
+        }
+      }
+    }
+    this.queue.push({ t: t + best, kind, a: b.index, b: target, versionA: b.version, versionB: 0 });
+  }
+
+  /** Predicts when a and b meet, if before either changes its motion. */
+  private predictPair(a: BallState, b: BallState, t: number): void {
+    const ma = this.translating(a);
+    const mb = this.translating(b);
+    if (!ma && !mb) return;
+    if (a.motion === 'pocketed' || b.motion === 'pocketed') return;
+    const H = Math.min(ma ? a.tEnd : Infinity, mb ? b.tEnd : Infinity) - t;
+    if (!(H >= 0)) return;
+    const pa = this.pathAt(a, t, this.pathA);
+    const pb = this.pathAt(b, t, this.pathB);
+    if (!boxesOverlap(sweptBox(pa, H, this.R, this.boxA), sweptBox(pb, H, this.R, this.boxB))) return;
+    const tau = ballBallTime(pa, pb, this.R, H, this.rootTol);
+    if (tau === Infinity) return;
+    const [first, second] = a.index < b.index ? [a, b] : [b, a];
+    this.queue.push({ t: t + tau, kind: Kind.Ball, a: first.index, b: second.index, versionA: first.version, versionB: second.version });
+  }
+
+  private predictAround(changed: readonly BallState[], t: number): void {
+    for (const b of changed) this.predictOwn(b, t);
+    for (const b of changed) {
+      for (const other of this.balls) {
+        if (other === b) continue;
+        // A pair of two changed balls is predicted once, from the lower index.
+        if (changed.includes(other) && other.index < b.index) continue;
+        this.predictPair(b, other, t);
+      }
+    }
+  }
+
+  private stale(p: Prediction): boolean {
+    if (this.balls[p.a]!.version !== p.versionA) return true;
+    return p.kind === Kind.Ball && this.balls[p.b]!.version !== p.versionB;
+  }
+
+  strike(shot: Shot): void {
+    const cue = this.balls.find((b) => b.id === shot.ball)!;
+    const s = sampleAt(cue, 0, this.cloth, emptySample());
+    strikeBall(shot.heading, shot.speed, shot.side, shot.top, this.R, s);
+    for (const b of this.balls) if (b !== cue) this.record(b);
+    this.restart(cue, 0, s);
+    this.predictAround([cue], 0);
+  }
+
+  run(): number {
+    const limit = EVENTS_PER_BALL_LIMIT * this.balls.length;
+    let last = 0;
+    for (let p = this.queue.pop(); p; p = this.queue.pop()) {
+      if (this.stale(p)) continue;
+      if (this.events.length >= limit) {
+        throw new Error(`simulation did not settle: ${this.events.length} events by t = ${p.t} s (a bug: please report the scene and shot)`);
+      }
+      const t = p.t;
+      last = t;
+      const a = this.balls[p.a]!;
+      switch (p.kind) {
+        case Kind.Motion:
+          this.onMotion(a, t);
+          break;
+        case Kind.Pocket:
+          this.onPocket(a, p.b, t);
+          break;
+        case Kind.Ball:
+          this.onBall(a, this.balls[p.b]!, t);
+          break;
+        case Kind.Cushion:
+          this.onCushion(a, p.b, t);
+          break;
+      }
+    }
+    return last;
+  }
+
+  private onMotion(b: BallState, t: number): void {
+    const from = b.motion;
+    const s = sampleAt(b, t - b.t0, this.cloth, this.sa);
+    this.restart(b, t, s);
+    this.events.push({ t, kind: 'motion', balls: [b.id], from, to: b.motion });
+    this.predictAround([b], t);
+  }
+
+  private onPocket(b: BallState, index: number, t: number): void {
+    const pocket = this.table.pockets[index]!;
+    const s = sampleAt(b, t - b.t0, this.cloth, this.sa);
+    b.t0 = t;
+    b.x = s.x;
+    b.y = s.y;
+    b.vx = b.vy = b.wx = b.wy = b.wz = b.ax = b.ay = 0;
+    b.motion = 'pocketed';
+    b.tEnd = Infinity;
+    b.pocket = pocket.id;
+    b.version++;
+    this.record(b);
+    this.events.push({ t, kind: 'pocket', balls: [b.id], pocket: pocket.id });
+  }
+
+  private onBall(a: BallState, b: BallState, t: number): void {
+    const sa = sampleAt(a, t - a.t0, this.cloth, this.sa);
+    const sb = sampleAt(b, t - b.t0, this.cloth, this.sb);
+    const nx0 = sb.x - sa.x;
+    const ny0 = sb.y - sa.y;
+    const d = Math.sqrt(nx0 * nx0 + ny0 * ny0);
+    const speed = ((sa.vx - sb.vx) * nx0 + (sa.vy - sb.vy) * ny0) / d;
+    collideBalls(sa, sb, this.ballParams);
+    this.settleContact(sa, sb, nx0 / d, ny0 / d);
+    this.rollTogether(sa, sb, nx0 / d, ny0 / d);
+    this.restart(a, t, sa);
+    this.restart(b, t, sb);
+    this.events.push({ t, kind: 'ball', balls: [a.id, b.id], speed });
+    this.predictAround([a, b], t);
+  }
+
+  /**
+   * Two balls that would separate by less than CREEP_DISTANCE before the cloth brings them back
+   * together stay in contact: they are locked along the line of centres (equal normal velocities)
+   * and the slip of each on the cloth along that line is brought to zero, by the friction impulses
+   * the cloth would give them while they press on each other. Locking velocities with impulses
+   * can only take energy away (Kelvin's theorem on impulsive constraints), and afterwards
+   * neither ball is driven into the other, so no Zeno sequence of ever smaller impacts follows.
+   *
+   * Along n, with V the common normal velocity and s_i = R (ω_i · t), t = (n_y, -n_x), each
+   * ball's cloth slip along n is V + s_i. Cloth impulses F_A, F_B (per unit mass) change V by
+   * (F_A + F_B)/2, the pair sharing them, and s_i by (5/2) F_i. Zero slip for both gives
+   * S = F_A + F_B = -2 (2V + s_A + s_B) / 7 and F_A - F_B = -(2/5)(s_A - s_B).
+   */
+  private settleContact(sa: BallSample, sb: BallSample, nx: number, ny: number): void {
+    const sep = (sb.vx - sa.vx) * nx + (sb.vy - sa.vy) * ny;
+    const pull = this.normalAccel(sa, nx, ny) - this.normalAccel(sb, nx, ny);
+    if (!(pull > 0) || sep * sep >= 2 * pull * CREEP_DISTANCE) return;
+    const R = this.R;
+    const V = 0.5 * ((sa.vx + sb.vx) * nx + (sa.vy + sb.vy) * ny);
+    const spA = R * (sa.wx * ny - sa.wy * nx);
+    const spB = R * (sb.wx * ny - sb.wy * nx);
+    const S = (-2 * (2 * V + spA + spB)) / 7;
+    const D = -0.4 * (spA - spB);
+    const Vn = V + 0.5 * S;
+    lockNormal(sa, nx, ny, Vn, (spA + 1.25 * (S + D)) / R);
+    lockNormal(sb, nx, ny, Vn, (spB + 1.25 * (S - D)) / R);
+  }
+
+  /**
+   * Two rolling balls still pressed together after settleContact (their rolling resistance pulls
+   * them into each other, and they do not slide apart sideways) roll on as one: both take the mean
+   * velocity, rolling. Momentum is kept and, since both rolled before, energy can only drop (it is
+   * 7/10 m v² per ball, convex in v).
+   */
+  private rollTogether(sa: BallSample, sb: BallSample, nx: number, ny: number): void {
+    const dvx = sb.vx - sa.vx;
+    const dvy = sb.vy - sa.vy;
+    if (Math.abs(dvx * nx + dvy * ny) > CONTACT_SPEED) return;
+    const pull = this.normalAccel(sa, nx, ny) - this.normalAccel(sb, nx, ny);
+    if (dvx * dvx + dvy * dvy - 2 * this.R * pull >= -2 * this.R * CONTACT_ACCEL) return;
+    if (!this.rolls(sa) || !this.rolls(sb)) return;
+    const vx = 0.5 * (sa.vx + sb.vx);
+    const vy = 0.5 * (sa.vy + sb.vy);
+    for (const s of [sa, sb]) {
+      s.vx = vx;
+      s.vy = vy;
+      s.wx = -vy / this.R;
+      s.wy = vx / this.R;
+    }
+  }
+
+  private rolls(s: BallSample): boolean {
+    const ux = s.vx - this.R * s.wy;
+    const uy = s.vy + this.R * s.wx;
+    return ux * ux + uy * uy <= REST_SPEED * REST_SPEED;
+  }
+
+  /** The acceleration along n that the cloth gives a ball in state s (sliding or rolling). */
+  private normalAccel(s: BallSample, nx: number, ny: number): number {
+    const c = this.cloth;
+    const ux = s.vx - c.R * s.wy;
+    const uy = s.vy + c.R * s.wx;
+    const u = Math.sqrt(ux * ux + uy * uy);
+    if (u > 1e-9) return (-c.muSlide * c.g * (ux * nx + uy * ny)) / u;
+    const v = Math.sqrt(s.vx * s.vx + s.vy * s.vy);
+    return v > 0 ? (-c.muRoll * c.g * (s.vx * nx + s.vy * ny)) / v : 0;
+  }
+
+  private onCushion(b: BallState, index: number, t: number): void {
+    const cushion = this.table.cushions[index]!;
+    const s = sampleAt(b, t - b.t0, this.cloth, this.sa);
+    // n: unit normal into the cushion at the contact.
+    let nx: number;
+    let ny: number;
+    if (cushion.kind === 'segment') {
+      nx = cushion.nx;
+      ny = cushion.ny;
+    } else {
+      nx = cushion.cx - s.x;
+      ny = cushion.cy - s.y;
+      const d = Math.sqrt(nx * nx + ny * ny);
+      nx /= d;
+      ny /= d;
+    }
+    // The cushion frame (Mathavan): y = n into the cushion, x = (n_y, -n_x), z up: right-handed.
+    const vxf = s.vx * ny - s.vy * nx;
+    const vyf = s.vx * nx + s.vy * ny;
+    const wxf = s.wx * ny - s.wy * nx;
+    const wyf = s.wx * nx + s.wy * ny;
+    const out = cushionRebound({ vx: vxf, vy: vyf, wx: wxf, wy: wyf, wz: s.wz }, this.cushionParams, { tolerance: this.cushionTol });
+    s.vx = out.vx * ny + out.vy * nx;
+    s.vy = -out.vx * nx + out.vy * ny;
+    s.wx = out.wx * ny + out.wy * nx;
+    s.wy = -out.wx * nx + out.wy * ny;
+    s.wz = out.wz;
+    // A rebound too weak to leave the cushion against the cloth's pull becomes a resting contact.
+    const away = -(s.vx * nx + s.vy * ny);
+    const pull = this.normalAccel(s, nx, ny);
+    if (pull > 0 && away * away < 2 * pull * CREEP_DISTANCE) {
+      // Against the fixed cushion the lock is simply: no normal velocity, no cloth slip along n.
+      lockNormal(s, nx, ny, 0, 0);
+    }
+    this.restart(b, t, s);
+    this.events.push({ t, kind: 'cushion', balls: [b.id], cushion: cushion.name, speed: vyf });
+    this.predictAround([b], t);
+  }
+
+  finish(duration: number): Outcome {
+    const balls: FinalBall[] = this.balls.map((b) => {
+      const s = sampleAt(b, Math.max(0, duration - b.t0), this.cloth, this.sa);
+      const x = b.motion === 'pocketed' ? b.x : s.x;
+      const y = b.motion === 'pocketed' ? b.y : s.y;
+      const fb: FinalBall = { id: b.id, x: x === 0 ? 0 : x, y: y === 0 ? 0 : y, pocketed: b.motion === 'pocketed' };
+      return b.pocket === undefined ? fb : { ...fb, pocket: b.pocket };
+    });
+    return {
+      table: this.table.name,
+      balls,
+      events: this.events,
+      duration,
+      hash: hashFinalState(balls, duration, this.events.length),
+      paths: this.balls.map((b, i) => ({ id: b.id, segments: this.segments[i]! })),
+    };
+  }
+}
+
+/**
+ * Plays a shot on a scene of balls at rest and returns where they end, every event in time order,
+ * the time until all rest, a hash of the final state and every ball's path. Bad input throws a
+ * SimulationInputError (a RangeError) naming the problem before anything is simulated; a tip
+ * offset beyond half the radius throws a MiscueError.
+ */
+export function simulate(scene: Scene, shot: Shot, options?: SimOptions): Outcome {
+  const table = validateScene(scene);
+  validateShot(scene, shot);
+  const { rootTolerance, cushionTolerance } = validateOptions(options);
+  const sim = new Simulation(table, scene, rootTolerance, cushionTolerance);
+  sim.strike(shot);
+  const duration = sim.run();
+  return sim.finish(duration);
+}

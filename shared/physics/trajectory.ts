@@ -1,0 +1,61 @@
+// Sampling an outcome at any time, for animation: each ball's path is a list of closed-form
+// segments, and the state at t comes from the last segment that starts at or before t.
+import type { BallSample, Motion } from './ball-state.ts';
+import { spinZAfter, specificEnergy, type ClothParams } from './cloth-motion.ts';
+import type { Outcome, PathSegment } from './sim-types.ts';
+import { tableSpec } from './tables.ts';
+
+export interface BallAtTime extends BallSample {
+  readonly id: string;
+  readonly motion: Motion;
+}
+
+export function clothParams(tableName: string): ClothParams {
+  const t = tableSpec(tableName);
+  return { R: t.ballRadius, g: t.g, muSlide: t.cloth.muSlide, muRoll: t.cloth.muRoll, spinDecel: t.cloth.spinDecel };
+}
+
+/** The last segment with t0 <= t (binary search); the first one if t is before it. */
+function segmentAt(segments: readonly PathSegment[], t: number): PathSegment {
+  let lo = 0;
+  let hi = segments.length - 1;
+  while (lo < hi) {
+    const mid = (lo + hi + 1) >> 1;
+    if (segments[mid]!.t0 <= t) lo = mid;
+    else hi = mid - 1;
+  }
+  return segments[lo]!;
+}
+
+function evaluate(s: PathSegment, t: number, p: ClothParams): BallSample {
+  const dt = Math.max(0, t - s.t0);
+  if (s.motion === 'rest' || s.motion === 'pocketed') return { x: s.x, y: s.y, vx: 0, vy: 0, wx: 0, wy: 0, wz: 0 };
+  const wz = spinZAfter(s.wz, dt, p);
+  if (s.motion === 'spinning') return { x: s.x, y: s.y, vx: 0, vy: 0, wx: 0, wy: 0, wz };
+  const vx = s.vx + s.ax * dt;
+  const vy = s.vy + s.ay * dt;
+  const x = s.x + (s.vx + 0.5 * s.ax * dt) * dt;
+  const y = s.y + (s.vy + 0.5 * s.ay * dt) * dt;
+  if (s.motion === 'rolling') return { x, y, vx, vy, wx: -vy / p.R, wy: vx / p.R, wz };
+  const k = 5 / (2 * p.R);
+  return { x, y, vx, vy, wx: s.wx + k * s.ay * dt, wy: s.wy - k * s.ax * dt, wz };
+}
+
+/** Every ball's position, velocity and spin at time t (s) of the outcome. */
+export function sampleOutcome(outcome: Outcome, t: number): BallAtTime[] {
+  const p = clothParams(outcome.table);
+  return outcome.paths.map((path) => {
+    const s = segmentAt(path.segments, t);
+    return { id: path.id, motion: s.t0 <= t ? s.motion : 'rest', ...evaluate(s, t, p) };
+  });
+}
+
+/** Total kinetic and rotational energy (J) of the balls still on the table at time t. */
+export function energyAt(outcome: Outcome, t: number): number {
+  const table = tableSpec(outcome.table);
+  let e = 0;
+  for (const b of sampleOutcome(outcome, t)) {
+    if (b.motion !== 'pocketed') e += table.ballMass * specificEnergy(b, table.ballRadius);
+  }
+  return e;
+}

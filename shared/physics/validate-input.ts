@@ -1,0 +1,85 @@
+// Checks a scene and a shot before anything is simulated: every problem is a clear error that
+// names it, and nothing has been computed when it is thrown.
+import type { Scene, Shot, SimOptions } from './sim-types.ts';
+import { MISCUE_LIMIT, MiscueError } from './strike.ts';
+import { tableSpec, type TableSpec } from './tables.ts';
+
+/** Overlap between balls, or between a ball and a cushion, tolerated as touching (m). */
+export const CONTACT_TOLERANCE = 1e-9;
+/** The fastest shot accepted (m/s): a hard break is about 11 m/s. */
+export const MAX_SPEED = 20;
+export const MAX_BALLS = 64;
+
+export class SimulationInputError extends RangeError {
+  override readonly name = 'SimulationInputError';
+}
+
+function fail(message: string): never {
+  throw new SimulationInputError(message);
+}
+
+function finite(value: unknown, what: string): number {
+  if (typeof value !== 'number' || !Number.isFinite(value)) fail(`${what} must be a finite number, got ${String(value)}`);
+  return value;
+}
+
+export function validateScene(scene: Scene): TableSpec {
+  if (typeof scene !== 'object' || scene === null) fail('scene must be an object { table, balls }');
+  if (typeof scene.table !== 'string') fail('scene.table must be a table name');
+  let table: TableSpec;
+  try {
+    table = tableSpec(scene.table);
+  } catch (err) {
+    fail(`scene.table: ${(err as Error).message}`);
+  }
+  const balls = scene.balls;
+  if (!Array.isArray(balls) || balls.length === 0) fail('scene.balls must be a non-empty array');
+  if (balls.length > MAX_BALLS) fail(`scene.balls has ${balls.length} balls, at most ${MAX_BALLS} are allowed`);
+  const R = table.ballRadius;
+  const hx = table.length / 2 - R + CONTACT_TOLERANCE;
+  const hy = table.width / 2 - R + CONTACT_TOLERANCE;
+  const seen = new Set<string>();
+  balls.forEach((b, i) => {
+    if (typeof b !== 'object' || b === null) fail(`scene.balls[${i}] must be an object { id, x, y }`);
+    if (typeof b.id !== 'string' || b.id.length === 0 || b.id.length > 32) fail(`scene.balls[${i}].id must be a string of 1 to 32 characters`);
+    if (seen.has(b.id)) fail(`duplicate ball id "${b.id}"`);
+    seen.add(b.id);
+    const x = finite(b.x, `ball "${b.id}" x`);
+    const y = finite(b.y, `ball "${b.id}" y`);
+    if (Math.abs(x) > hx || Math.abs(y) > hy) {
+      fail(`ball "${b.id}" at (${x}, ${y}) is off the table: its centre must lie within ${table.length / 2 - R} of the centre along x and ${table.width / 2 - R} along y`);
+    }
+  });
+  const limit = 2 * R - CONTACT_TOLERANCE;
+  for (let i = 0; i < balls.length; i++) {
+    for (let j = i + 1; j < balls.length; j++) {
+      const dx = balls[j]!.x - balls[i]!.x;
+      const dy = balls[j]!.y - balls[i]!.y;
+      const d = Math.sqrt(dx * dx + dy * dy);
+      if (d < limit) fail(`balls "${balls[i]!.id}" and "${balls[j]!.id}" overlap by ${(2 * R - d).toExponential(3)} m (centres ${d} m apart, diameter ${2 * R} m)`);
+    }
+  }
+  return table;
+}
+
+export function validateShot(scene: Scene, shot: Shot): void {
+  if (typeof shot !== 'object' || shot === null) fail('shot must be an object { ball, heading, speed, side, top }');
+  if (!scene.balls.some((b) => b.id === shot.ball)) fail(`shot.ball "${String(shot.ball)}" is not a ball of the scene`);
+  const heading = finite(shot.heading, 'shot.heading');
+  if (Math.abs(heading) > 1000) fail(`shot.heading must be an angle in radians within ±1000, got ${heading}`);
+  const speed = finite(shot.speed, 'shot.speed');
+  if (!(speed > 0) || speed > MAX_SPEED) fail(`shot.speed must be in (0, ${MAX_SPEED}] m/s, got ${speed}`);
+  const side = finite(shot.side, 'shot.side');
+  const top = finite(shot.top, 'shot.top');
+  if (Math.sqrt(side * side + top * top) > MISCUE_LIMIT) {
+    throw new MiscueError(`miscue: tip offset (side ${side}, top ${top}) is beyond ${MISCUE_LIMIT} R`);
+  }
+}
+
+export function validateOptions(options: SimOptions | undefined): { rootTolerance: number; cushionTolerance: SimOptions['cushionTolerance'] } {
+  const rootTolerance = options?.rootTolerance ?? 1e-12;
+  if (typeof rootTolerance !== 'number' || !(rootTolerance >= 1e-15 && rootTolerance <= 1e-3)) {
+    fail(`options.rootTolerance must be in [1e-15, 1e-3] s, got ${String(rootTolerance)}`);
+  }
+  return { rootTolerance, cushionTolerance: options?.cushionTolerance ?? 'balanced' };
+}
