@@ -70,7 +70,7 @@ export interface OutcomeBall {
 export interface OutcomeEvent {
   t: number;
   kind: 'ball' | 'cushion' | 'pocket' | 'motion' | (string & {});
-  balls: string[];
+  balls: readonly string[];
   pocket?: string;
 }
 
