@@ -1,6 +1,6 @@
 // Helpers every referee uses: copying the game, checking who shoots and with which ball, the
 // verdict record, and putting the cue ball in hand.
-import { tableSpec, type TableSpec } from '../physics/index.ts';
+import { tableSpec, type TableSpec } from '../physics/tables.ts';
 import { RuleError } from './errors.ts';
 import { freeSpot } from './placement.ts';
 import type { Ball, BallInHand, Game, PlayerId, Shot, Verdict } from './types.ts';

@@ -1,7 +1,7 @@
 // The referees' one entry point. Rules are a reducer, as in boardgame.io: applyShot(game, shot,
 // outcome) returns the next Game and never changes its arguments; every random draw comes from the
 // generator state kept in the Game. Illegal actions throw a RuleError and change nothing.
-import { isTableName, type TableName } from '../physics/index.ts';
+import { isTableName, type TableName } from '../physics/tables.ts';
 import {
   assertNotOver,
   assertPlayerOnTurn,

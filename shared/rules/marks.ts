@@ -1,7 +1,7 @@
 // Table markings the referees need, from the playing area of shared/physics (metres from the
 // centre, x along the length; the bottom end x = -length/2 is the head end of a pool table and the
 // baulk end of a snooker table, see pockets.ts).
-import { tableSpec, type TableName, type TableSpec } from '../physics/index.ts';
+import { tableSpec, type TableName, type TableSpec } from '../physics/tables.ts';
 import type { Point } from './types.ts';
 
 /** Pool (WPA Definitions): the head string, the foot and head spots, a quarter length from each end rail. */

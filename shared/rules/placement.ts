@@ -1,6 +1,6 @@
 // Placing balls: on the bed, clear of other balls, inside the area of a ball in hand; finding a
 // free spot for a ball in hand; spotting a ball as near as possible to a point along the long string.
-import type { TableSpec } from '../physics/index.ts';
+import type { TableSpec } from '../physics/tables.ts';
 import { poolMarks, snookerMarks } from './marks.ts';
 import type { Ball, BallInHand, Point } from './types.ts';
 

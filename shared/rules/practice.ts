@@ -1,6 +1,6 @@
 // Practice: one player, any balls placed anywhere on the bed (validated), shots that only move the
 // balls, undo of the last steps, and the list of shots to replay through the simulation.
-import type { TableName, TableSpec } from '../physics/index.ts';
+import type { TableName, TableSpec } from '../physics/tables.ts';
 import { assertPlayerOnTurn, describeList, putInHand, specOfGame } from './common.ts';
 import { RuleError } from './errors.ts';
 import type { ShotFacts } from './outcome.ts';

@@ -1,6 +1,6 @@
 // Racks and opening positions. Random orders come from the seeded generator (rng.ts); the state
 // after the draw is returned so that it goes back into the Game.
-import type { TableSpec } from '../physics/index.ts';
+import type { TableSpec } from '../physics/tables.ts';
 import { caromMarks, poolMarks, snookerMarks } from './marks.ts';
 import { preferredSpot } from './placement.ts';
 import { nextInt, shuffle } from './rng.ts';

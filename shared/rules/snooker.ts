@@ -1,6 +1,6 @@
 // Snooker, by the WPBSA Official Rules of Snooker (Section 2, Definitions; Section 3, The Game).
 // Rules are cited by section and name: "S3 Spotting Colours" is the rule of that name in Section 3.
-import type { TableSpec } from '../physics/index.ts';
+import type { TableSpec } from '../physics/tables.ts';
 import { addFoul, describeList, opponent, putInHand, specOfGame } from './common.ts';
 import { RuleError } from './errors.ts';
 import { snookerMarks } from './marks.ts';

@@ -1,9 +1,9 @@
 // Types of the referees: the Game (plain JSON data), the Shot with its declarations, the Outcome
 // read from the table simulation, and the Verdict of a shot. No behaviour lives here.
-import type { TableName } from '../physics/index.ts';
+import type { TableName } from '../physics/tables.ts';
 import type { PocketId } from './pockets.ts';
 
-export type { TableName } from '../physics/index.ts';
+export type { TableName } from '../physics/tables.ts';
 export type { PocketId } from './pockets.ts';
 
 export type GameKind = 'nineball' | 'eightball' | 'snooker' | 'threecushion' | 'practice';

@@ -16,7 +16,7 @@ import {
   type StrikeParams,
   type TableName,
 } from '../../shared/rules/index.ts';
-import { tableSpec } from '../../shared/physics/index.ts';
+import { tableSpec } from '../../shared/physics/tables.ts';
 
 export type Simulate = (scene: { table: TableName; balls: Ball[] }, shot: StrikeParams) => Outcome;
 

@@ -3,7 +3,7 @@
 // decides, deterministically, whether that ball drops (in the nearest pocket), goes to a cushion
 // and moves elsewhere, whether the cue ball follows it in, and on the carom table whether the cue
 // ball goes three cushions to the other ball.
-import { tableSpec } from '../../shared/physics/index.ts';
+import { tableSpec } from '../../shared/physics/tables.ts';
 import { placementProblem } from '../../shared/rules/index.ts';
 import type { Ball, Outcome, OutcomeEvent, StrikeParams, TableName } from '../../shared/rules/index.ts';
 import { nearestPocket } from './rules-bot.ts';

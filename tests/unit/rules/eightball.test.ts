@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { tableSpec } from '../../../shared/physics/index.ts';
+import { tableSpec } from '../../../shared/physics/tables.ts';
 import {
   applyShot,
   decide,

@@ -1,7 +1,7 @@
 // Property tests: random (but well-formed) outcomes fed to every referee.
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { tableSpec } from '../../../shared/physics/index.ts';
+import { tableSpec } from '../../../shared/physics/tables.ts';
 import {
   applyShot,
   cueBallId,
