@@ -1,5 +1,7 @@
 // Three-cushion carom, by the UMB rules of carom billiards (three-cushion discipline).
-import { addFoul, opponent } from './common.ts';
+import { addFoul, opponent, specOfGame } from './common.ts';
+import { caromMarks } from './marks.ts';
+import { freeSpot, overlapping } from './placement.ts';
 import type { ShotFacts } from './outcome.ts';
 import type { Shot, ThreeCushionGame, Verdict } from './types.ts';
 
@@ -57,7 +59,11 @@ export function judgeThreeCushion(g: ThreeCushionGame, shot: Shot, f: ShotFacts,
   g.shots += 1;
   // UMB: on the opening shot the cue ball must meet the red first; otherwise it is a foul.
   if (opening && c.first !== 'red') addFoul(v, c.first === null ? 'no-contact' : 'break-red-first');
-  if (f.pots.length > 0) addFoul(v, 'ball-off-table'); // carom tables have no pockets
+  if (f.pots.length > 0) {
+    // Carom tables have no pockets: a ball reported gone has left the table, a foul.
+    addFoul(v, 'ball-off-table');
+    respotCarom(g, f.pots.map((p) => p.id), v);
+  }
   const point = !v.foul && c.second !== null && c.cushionsBeforeSecond >= 3;
   if (point) {
     g.scores[shooter] = (g.scores[shooter] ?? 0) + 1;
@@ -85,4 +91,21 @@ export function judgeThreeCushion(g: ThreeCushionGame, shot: Shot, f: ShotFacts,
       ? c.first === null ? 'no object ball met' : 'only one object ball met'
       : `only ${c.cushionsBeforeSecond} cushion${c.cushionsBeforeSecond === 1 ? '' : 's'} before the second ball`;
   v.message = `no point for ${shooter}: ${why}; ${other} to play`;
+}
+
+/**
+ * Put back the balls that left the table (UMB: a ball that leaves the table is spotted, the red on
+ * the top spot and a cue ball on the head spot; when that spot is taken, the other spot, then the
+ * centre spot; failing all three, the nearest free place).
+ */
+function respotCarom(g: ThreeCushionGame, ids: readonly string[], v: Verdict): void {
+  const spec = specOfGame(g);
+  const m = caromMarks(spec);
+  const centre = { x: 0, y: 0 };
+  for (const id of ids) {
+    const order = id === 'red' ? [m.topSpot, m.headSpot, centre] : [m.headSpot, m.topSpot, centre];
+    const spot = order.find((p) => overlapping(spec, g.balls, p, id) === null) ?? freeSpot(spec, g.balls, id, 'anywhere', m.headSpot);
+    g.balls = [...g.balls.filter((b) => b.id !== id), { id, x: spot.x, y: spot.y }];
+    v.spotted.push(id);
+  }
 }

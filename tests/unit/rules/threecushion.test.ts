@@ -198,9 +198,14 @@ describe('three-cushion innings and the race', () => {
   it('a ball leaving the table is a foul: no point, the inning ends', () => {
     const g = midGame();
     const n = applyShot(g, shotFor(g), outcome(g).hit('white', 'red').cushion('white', 3).hit('white', 'yellow').pot('red', 'off').build());
-    expect(n.verdict).toMatchObject({ foul: true, reason: 'ball-off-table' });
+    expect(n.verdict).toMatchObject({ foul: true, reason: 'ball-off-table', spotted: ['red'] });
     expect(n.scores.ann).toBe(0);
     expect(n.turn).toBe('bob');
+    expect(n.balls.find((b) => b.id === 'red')).toEqual({ id: 'red', x: spec.length / 4, y: 0 });
+    // the cue ball off the table comes back on the head spot, or the top spot when that is taken
+    const h = applyShot(g, shotFor(g), outcome(g).hit('white', 'red').move('red', 0.3, 0.3).pot('white', 'off').build());
+    expect(h.balls.find((b) => b.id === 'white')).toEqual({ id: 'white', x: spec.length / 4, y: 0 });
+    expect(h.balls).toHaveLength(3);
   });
 
   it('both object balls met at one instant after three cushions is a point; without the cushions it is not', () => {
