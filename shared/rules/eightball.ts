@@ -113,7 +113,7 @@ export function judgeEightBall(g: EightBallGame, shot: Shot, f: ShotFacts, v: Ve
   }
 
   if (v.foul) {
-    // WPA 3.6/2.7 standard fouls: ball in hand anywhere; balls pocketed on a foul stay down.
+    // WPA eight-ball standard fouls: ball in hand anywhere (1.5); balls pocketed on a foul stay down.
     giveBallInHand(g, shooter, 'anywhere');
     v.next = g.turn;
     v.message = `foul by ${shooter} (${v.fouls.join(', ')}): ${other} has ball in hand`;
@@ -134,7 +134,7 @@ export function judgeEightBall(g: EightBallGame, shot: Shot, f: ShotFacts, v: Ve
   }
   const own = g.groups ? objectPots.filter((p) => groupOf(p.id) === g.groups?.[shooter]) : [];
   if (own.length > 0) {
-    v.continues = true; // WPA 3.5 continuing play
+    v.continues = true; // WPA eight-ball, continuing play: own group ball pocketed
     v.next = shooter;
     v.message = `${shooter} pockets ${describeList(objectPots.map((p) => p.id))} and continues`;
   } else {

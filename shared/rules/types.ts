@@ -46,7 +46,7 @@ export interface Shot extends StrikeParams {
   player: PlayerId;
   /** Nine-ball only: the shot is declared a push-out (WPA 2.4). */
   pushOut?: boolean;
-  /** Eight-ball only, when the 8 is the shooter's legal object ball: the called pocket (WPA 3.5). */
+  /** Eight-ball only, when the 8 is the shooter's legal object ball: the called pocket (WPA 3, 1.6 call shot). */
   calledPocket?: PocketId;
   /** Eight-ball only, with calledPocket: the called ball, which can only be '8'. */
   calledBall?: string;
