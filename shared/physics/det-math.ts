@@ -81,3 +81,32 @@ export function detExp(x: number): number {
   for (let i = Math.abs(k); i > 0; i--) scale *= step;
   return sum * scale;
 }
+
+const PI = 3.141592653589793;
+const QUARTER_PI = 0.7853981633974483;
+const TAN_PI_8 = 0.41421356237309503;
+
+/** atan(u) for |u| <= tan(π/8) by its Taylor series (terms below 1e-18 dropped). */
+function atanSmall(u: number): number {
+  const u2 = u * u;
+  let term = u;
+  let sum = u;
+  for (let n = 1; n <= 22; n++) {
+    term *= -u2;
+    sum += term / (2 * n + 1);
+  }
+  return sum;
+}
+
+/** atan2(y, x) in (-π, π], deterministic: octant reduction, then atan(t) = π/4 + atan((t-1)/(t+1)). */
+export function detAtan2(y: number, x: number): number {
+  if (x === 0 && y === 0) return 0;
+  const ax = Math.abs(x);
+  const ay = Math.abs(y);
+  const swap = ay > ax;
+  const t = swap ? ax / ay : ay / ax; // in [0, 1]
+  let a = t > TAN_PI_8 ? QUARTER_PI + atanSmall((t - 1) / (t + 1)) : atanSmall(t);
+  if (swap) a = 2 * QUARTER_PI - a;
+  if (x < 0) a = PI - a;
+  return y < 0 || (y === 0 && 1 / y < 0) ? -a : a;
+}

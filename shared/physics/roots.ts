@@ -112,7 +112,7 @@ export function rootsIn(c: readonly number[], lo: number, hi: number): number[] 
 /**
  * The first time in [lo, hi] at which p, positive at lo, reaches zero or below: the moment two
  * bodies whose squared gap p measures come into contact. Returns the last time found with p still
- * > 0 (so the bodies never overlap at the event), or Infinity when p stays positive. Tangencies
+ * >= 0 (so the bodies never overlap at the event), or Infinity when p stays positive. Tangencies
  * where p just touches zero count as contact; a critical point where p dips to <= 0 is found even
  * when p is positive at both ends.
  */

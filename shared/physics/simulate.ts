@@ -23,6 +23,9 @@ import { validateOptions, validateScene, validateShot } from './validate-input.t
  */
 export const CREEP_DISTANCE = 1e-4; // m
 
+/** Normal speed (m/s) below which a pair pressed together is brought to rest along its line of centres. */
+export const PRESS_SPEED = 0.01;
+
 /** Events per ball beyond which the loop is broken, with an error, never a silent answer. */
 const EVENTS_PER_BALL_LIMIT = 2000;
 
@@ -270,6 +273,7 @@ class Simulation {
     collideBalls(sa, sb, this.ballParams);
     this.settleContact(sa, sb, nx0 / d, ny0 / d);
     this.rollTogether(sa, sb, nx0 / d, ny0 / d);
+    this.stopPressing(sa, sb, nx0 / d, ny0 / d);
     this.restart(a, t, sa);
     this.restart(b, t, sb);
     this.events.push({ t, kind: 'ball', balls: [a.id, b.id], speed });
@@ -311,12 +315,7 @@ class Simulation {
    * 7/10 m v² per ball, convex in v).
    */
   private rollTogether(sa: BallSample, sb: BallSample, nx: number, ny: number): void {
-    const dvx = sb.vx - sa.vx;
-    const dvy = sb.vy - sa.vy;
-    if (Math.abs(dvx * nx + dvy * ny) > CONTACT_SPEED) return;
-    const pull = this.normalAccel(sa, nx, ny) - this.normalAccel(sb, nx, ny);
-    if (dvx * dvx + dvy * dvy - 2 * this.R * pull >= -2 * this.R * CONTACT_ACCEL) return;
-    if (!this.rolls(sa) || !this.rolls(sb)) return;
+    if (!this.pressing(sa, sb, nx, ny) || !this.rolls(sa) || !this.rolls(sb)) return;
     const vx = 0.5 * (sa.vx + sb.vx);
     const vy = 0.5 * (sa.vy + sb.vy);
     for (const s of [sa, sb]) {
@@ -325,6 +324,29 @@ class Simulation {
       s.wx = -vy / this.R;
       s.wy = vx / this.R;
     }
+  }
+
+  /**
+   * A pair still pressed together after the locks above (one ball rolling, the other sliding
+   * across the line of centres) that moves along that line slower than PRESS_SPEED stops moving
+   * along it: both lose their normal velocity and the spin that goes with it. Taking velocity
+   * components away only takes energy away; at such speeds the change is below what anyone sees.
+   */
+  private stopPressing(sa: BallSample, sb: BallSample, nx: number, ny: number): void {
+    if (!this.pressing(sa, sb, nx, ny)) return;
+    const V = 0.5 * ((sa.vx + sb.vx) * nx + (sa.vy + sb.vy) * ny);
+    if (Math.abs(V) > PRESS_SPEED) return;
+    lockNormal(sa, nx, ny, 0, 0);
+    lockNormal(sb, nx, ny, 0, 0);
+  }
+
+  /** Whether two touching balls neither part nor slide apart sideways while the cloth pushes them together. */
+  private pressing(sa: BallSample, sb: BallSample, nx: number, ny: number): boolean {
+    const dvx = sb.vx - sa.vx;
+    const dvy = sb.vy - sa.vy;
+    if (Math.abs(dvx * nx + dvy * ny) > CONTACT_SPEED) return false;
+    const pull = this.normalAccel(sa, nx, ny) - this.normalAccel(sb, nx, ny);
+    return dvx * dvx + dvy * dvy - 2 * this.R * pull < -2 * this.R * CONTACT_ACCEL;
   }
 
   private rolls(s: BallSample): boolean {
@@ -365,7 +387,13 @@ class Simulation {
     const vyf = s.vx * nx + s.vy * ny;
     const wxf = s.wx * ny - s.wy * nx;
     const wyf = s.wx * nx + s.wy * ny;
-    const out = cushionRebound({ vx: vxf, vy: vyf, wx: wxf, wy: wyf, wz: s.wz }, this.cushionParams, { tolerance: this.cushionTol });
+    const input = { vx: vxf, vy: vyf, wx: wxf, wy: wyf, wz: s.wz };
+    let out: ReturnType<typeof cushionRebound>;
+    try {
+      out = cushionRebound(input, this.cushionParams, { tolerance: this.cushionTol });
+    } catch (err) {
+      throw new Error(`cushion impact of ball "${b.id}" on ${cushion.name} at t = ${t} s failed: ${(err as Error).message}; input ${JSON.stringify(input)}, params ${JSON.stringify(this.cushionParams)}`);
+    }
     s.vx = out.vx * ny + out.vy * nx;
     s.vy = -out.vx * nx + out.vy * ny;
     s.wx = out.wx * ny + out.wy * nx;
