@@ -3,7 +3,7 @@
 // polynomial in τ: a quadratic for a straight cushion, a quartic for a ball, an arc or a pocket
 // (the squared distance between two parabolas). Roots come from roots.ts, which cannot skip one.
 import type { Arc, Pocket, Segment } from './table-geometry.ts';
-import { evalPoly, firstEntry, rootsIn } from './roots.ts';
+import { firstEntry } from './roots.ts';
 
 /** A path relative to now: position, velocity and constant acceleration. */
 export interface Path {
@@ -19,25 +19,27 @@ export interface Path {
 export const CONTACT_SPEED = 1e-9;
 /** Relative normal acceleration below which touching bodies count as not pressed together (m/s^2). */
 export const CONTACT_ACCEL = 1e-9;
+/** Overlap that touching bodies may reach, through rounding, before it counts as a new contact (m). */
+export const CONTACT_OVERLAP = 1e-10;
 
 /**
- * The first τ in [0, H] at which the gap polynomial c (positive while apart) closes. When the
- * bodies already touch (c[0] <= 0, within rounding of a contact just resolved) it is a contact now
- * if they approach (c[1] < -slopeEps) or, not moving apart, are pressed together
- * (c[2] < -curvEps); if they part, the search starts where the gap stops growing.
+ * The first τ in [0, H] at which the gap polynomial c (positive while apart) closes. `scale` turns
+ * distances into the polynomial's units near contact: 1 for a gap, 2d for a squared distance
+ * d² - D². When the bodies already touch (c[0] <= 0, within rounding of a contact just resolved)
+ * it is a contact now if they approach or, not parting, are pressed together; otherwise the next
+ * contact is when they close by CONTACT_OVERLAP more than they are now, so rounding can neither
+ * hide a contact nor repeat one at the same instant.
  */
-export function nextContact(c: readonly number[], H: number, tol: number, slopeEps: number, curvEps: number): number {
+export function nextContact(c: readonly number[], H: number, tol: number, scale: number): number {
   if (c[0]! > 0) return firstEntry(c, 0, H, tol);
   const slope = c[1] ?? 0;
+  const slopeEps = scale * CONTACT_SPEED;
   if (slope < -slopeEps) return 0;
-  if (slope <= slopeEps && (c[2] ?? 0) < -curvEps) return 0;
-  const d: number[] = [];
-  for (let i = 1; i < c.length; i++) d.push(i * c[i]!);
-  for (const turn of rootsIn(d, 0, H)) {
-    if (turn <= 0) continue;
-    return evalPoly(c, turn) > 0 ? firstEntry(c, turn, H, tol) : Infinity;
-  }
-  return Infinity;
+  if (slope <= slopeEps && (c[2] ?? 0) < -0.5 * scale * CONTACT_ACCEL) return 0;
+  // Measured from the present (possibly slightly overlapping) distance.
+  const shifted = c.slice();
+  shifted[0] = scale * CONTACT_OVERLAP;
+  return firstEntry(shifted, 0, H, tol);
 }
 
 /** Squared distance between centres minus dist^2, as a quartic in τ. */
@@ -54,14 +56,14 @@ function distanceQuartic(dx: number, dy: number, dvx: number, dvy: number, dax: 
 /** Two balls of radius R meet when their centres are 2R apart. */
 export function ballBallTime(a: Path, b: Path, R: number, H: number, tol: number): number {
   const c = distanceQuartic(b.x - a.x, b.y - a.y, b.vx - a.vx, b.vy - a.vy, b.ax - a.ax, b.ay - a.ay, 2 * R);
-  return nextContact(c, H, tol, 4 * R * CONTACT_SPEED, 2 * R * CONTACT_ACCEL);
+  return nextContact(c, H, tol, 4 * R);
 }
 
 /** A ball meets a straight cushion when its centre is R from the nose line, within the segment. */
 export function segmentTime(p: Path, s: Segment, R: number, H: number, tol: number): number {
   // gap = -(n · (p - A)) - R, positive on the table side.
   const c = [-(s.nx * (p.x - s.ax) + s.ny * (p.y - s.ay)) - R, -(s.nx * p.vx + s.ny * p.vy), -0.5 * (s.nx * p.ax + s.ny * p.ay)];
-  const t = nextContact(c, H, tol, CONTACT_SPEED, 0.5 * CONTACT_ACCEL);
+  const t = nextContact(c, H, tol, 1);
   if (t === Infinity) return t;
   const x = p.x + (p.vx + 0.5 * p.ax * t) * t;
   const y = p.y + (p.vy + 0.5 * p.ay * t) * t;
@@ -80,7 +82,7 @@ export function inArcSpan(arc: Arc, dx: number, dy: number): boolean {
 /** A ball meets a rounded jaw (or a point, r = 0) when its centre is R + r from the arc's centre. */
 export function arcTime(p: Path, arc: Arc, R: number, H: number, tol: number): number {
   const c = distanceQuartic(p.x - arc.cx, p.y - arc.cy, p.vx, p.vy, p.ax, p.ay, R + arc.r);
-  const t = nextContact(c, H, tol, 2 * (R + arc.r) * CONTACT_SPEED, (R + arc.r) * CONTACT_ACCEL);
+  const t = nextContact(c, H, tol, 2 * (R + arc.r));
   if (t === Infinity) return t;
   const x = p.x + (p.vx + 0.5 * p.ax * t) * t;
   const y = p.y + (p.vy + 0.5 * p.ay * t) * t;

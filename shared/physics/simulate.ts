@@ -4,7 +4,7 @@
 // and effort follows events: nothing steps with the clock.
 import type { BallSample, BallState, Motion } from './ball-state.ts';
 import { collideBalls, type BallBallParams } from './ball-collision.ts';
-import { emptySample, REST_SPEED, sampleAt, startSegment, type ClothParams } from './cloth-motion.ts';
+import { accelerationAlong, emptySample, REST_SPEED, sampleAt, settle, startSegment, type ClothParams } from './cloth-motion.ts';
 import { cushionRebound } from './cushion.ts';
 import type { CushionParams } from './cushion-types.ts';
 import { arcTime, ballBallTime, boxesOverlap, CONTACT_ACCEL, CONTACT_SPEED, pocketTime, segmentTime, sweptBox, type Path } from './detect.ts';
@@ -23,7 +23,16 @@ import { validateOptions, validateScene, validateShot } from './validate-input.t
  */
 export const CREEP_DISTANCE = 1e-4; // m
 
-/** Normal speed (m/s) below which a pair pressed together is brought to rest along its line of centres. */
+/**
+ * A ball struck again within this time (s) of its last impact bounces elastically: the TC model of
+ * Luding and McNamara (1998, Granular Matter 1:113-128) against inelastic collapse. Touching
+ * balls struck at one instant (a rack, a line of frozen balls) then pass the impulse along in a
+ * finite number of impacts, like a Newton's cradle, instead of an endless train of ever smaller
+ * inelastic ones. Elastic impacts keep energy, so energy still never rises.
+ */
+export const TC_TIME = 1e-6;
+
+/** Common normal speed (m/s) of a pressed pair above which stopping it is counted as a notable change. */
 export const PRESS_SPEED = 0.01;
 
 /** Events per ball beyond which the loop is broken, with an error, never a silent answer. */
@@ -47,9 +56,14 @@ class Simulation {
   readonly cloth: ClothParams;
   readonly ballParams: BallBallParams;
   readonly cushionParams: CushionParams;
+  readonly elasticParams: BallBallParams;
+  private readonly lastImpact: number[];
+  /** Pressed pairs stopped along their line of centres while moving faster than PRESS_SPEED. */
+  fastPresses = 0;
   readonly R: number;
   private readonly sa: BallSample = emptySample();
   private readonly sb: BallSample = emptySample();
+  private readonly scratch: BallSample = emptySample();
   private readonly pathA: Path = { x: 0, y: 0, vx: 0, vy: 0, ax: 0, ay: 0 };
   private readonly pathB: Path = { x: 0, y: 0, vx: 0, vy: 0, ax: 0, ay: 0 };
   private readonly boxA = new Float64Array(4);
@@ -66,6 +80,8 @@ class Simulation {
     this.R = table.ballRadius;
     this.cloth = { R: this.R, g: table.g, muSlide: table.cloth.muSlide, muRoll: table.cloth.muRoll, spinDecel: table.cloth.spinDecel };
     this.ballParams = { R: this.R, ...table.ballBall };
+    this.elasticParams = { ...this.ballParams, restitution: 1 };
+    this.lastImpact = scene.balls.map(() => -Infinity);
     this.cushionParams = {
       M: table.ballMass,
       R: this.R,
@@ -270,7 +286,13 @@ class Simulation {
     const ny0 = sb.y - sa.y;
     const d = Math.sqrt(nx0 * nx0 + ny0 * ny0);
     const speed = ((sa.vx - sb.vx) * nx0 + (sa.vy - sb.vy) * ny0) / d;
-    collideBalls(sa, sb, this.ballParams);
+    // TC model: a ball struck again within TC_TIME of its last impact bounces elastically.
+    const rapid = t - this.lastImpact[a.index]! < TC_TIME || t - this.lastImpact[b.index]! < TC_TIME;
+    collideBalls(sa, sb, rapid ? this.elasticParams : this.ballParams);
+    this.lastImpact[a.index] = t;
+    this.lastImpact[b.index] = t;
+    settle(sa, this.cloth);
+    settle(sb, this.cloth);
     this.settleContact(sa, sb, nx0 / d, ny0 / d);
     this.rollTogether(sa, sb, nx0 / d, ny0 / d);
     this.stopPressing(sa, sb, nx0 / d, ny0 / d);
@@ -328,14 +350,16 @@ class Simulation {
 
   /**
    * A pair still pressed together after the locks above (one ball rolling, the other sliding
-   * across the line of centres) that moves along that line slower than PRESS_SPEED stops moving
-   * along it: both lose their normal velocity and the spin that goes with it. Taking velocity
-   * components away only takes energy away; at such speeds the change is below what anyone sees.
+   * across the line of centres) stops moving along that line: both lose their normal velocity and
+   * the spin that goes with it, so neither is driven into the other any more. Taking velocity
+   * components away only takes energy away. It happens when one ball pushes another along, which
+   * the closed-form motion cannot follow; the pressed pair is slow in practice (PRESS_SPEED counts
+   * the faster ones for the benchmark's report).
    */
   private stopPressing(sa: BallSample, sb: BallSample, nx: number, ny: number): void {
     if (!this.pressing(sa, sb, nx, ny)) return;
     const V = 0.5 * ((sa.vx + sb.vx) * nx + (sa.vy + sb.vy) * ny);
-    if (Math.abs(V) > PRESS_SPEED) return;
+    if (Math.abs(V) > PRESS_SPEED) this.fastPresses++;
     lockNormal(sa, nx, ny, 0, 0);
     lockNormal(sb, nx, ny, 0, 0);
   }
@@ -355,15 +379,17 @@ class Simulation {
     return ux * ux + uy * uy <= REST_SPEED * REST_SPEED;
   }
 
-  /** The acceleration along n that the cloth gives a ball in state s (sliding or rolling). */
+  /** The acceleration along n that the cloth gives a ball in state s, as its next segment will move. */
   private normalAccel(s: BallSample, nx: number, ny: number): number {
-    const c = this.cloth;
-    const ux = s.vx - c.R * s.wy;
-    const uy = s.vy + c.R * s.wx;
-    const u = Math.sqrt(ux * ux + uy * uy);
-    if (u > 1e-9) return (-c.muSlide * c.g * (ux * nx + uy * ny)) / u;
-    const v = Math.sqrt(s.vx * s.vx + s.vy * s.vy);
-    return v > 0 ? (-c.muRoll * c.g * (s.vx * nx + s.vy * ny)) / v : 0;
+    const c = this.scratch;
+    c.x = s.x;
+    c.y = s.y;
+    c.vx = s.vx;
+    c.vy = s.vy;
+    c.wx = s.wx;
+    c.wy = s.wy;
+    c.wz = s.wz;
+    return accelerationAlong(c, settle(c, this.cloth), nx, ny, this.cloth);
   }
 
   private onCushion(b: BallState, index: number, t: number): void {

@@ -1,0 +1,131 @@
+// The Dormand-Prince 5(4) embedded Runge-Kutta pair with its 4th-order continuous extension,
+// for the 6 variables of the cushion impact. Coefficients: J. R. Dormand and P. J. Prince,
+// "A family of embedded Runge-Kutta formulae", J. Comp. Appl. Math. 6 (1980) 19-26; dense
+// output: L. F. Shampine, "Some practical Runge-Kutta formulas", Math. Comp. 46 (1986), as
+// given by Hairer, Nørsett and Wanner, "Solving ODEs I", 2nd ed., sec. II.6. The 5th-order
+// solution is propagated (local extrapolation); the difference with the 4th-order one is the
+// error estimate. The last stage is evaluated at the step's end (FSAL): 6 evaluations a step.
+import type { CushionModel } from './cushion-model.ts';
+
+export const DIM = 6;
+
+const A21 = 1 / 5;
+const A31 = 3 / 40;
+const A32 = 9 / 40;
+const A41 = 44 / 45;
+const A42 = -56 / 15;
+const A43 = 32 / 9;
+const A51 = 19372 / 6561;
+const A52 = -25360 / 2187;
+const A53 = 64448 / 6561;
+const A54 = -212 / 729;
+const A61 = 9017 / 3168;
+const A62 = -355 / 33;
+const A63 = 46732 / 5247;
+const A64 = 49 / 176;
+const A65 = -5103 / 18656;
+const B1 = 35 / 384;
+const B3 = 500 / 1113;
+const B4 = 125 / 192;
+const B5 = -2187 / 6784;
+const B6 = 11 / 84;
+// 5th-order minus 4th-order weights.
+const E1 = 71 / 57600;
+const E3 = -71 / 16695;
+const E4 = 71 / 1920;
+const E5 = -17253 / 339200;
+const E6 = 22 / 525;
+const E7 = -1 / 40;
+// Continuous extension.
+const D1 = -12715105075 / 11282082432;
+const D3 = 87487479700 / 32700410799;
+const D4 = -10690763975 / 1880347072;
+const D5 = 701980252875 / 199316789632;
+const D6 = -1453857185 / 822651844;
+const D7 = 69997945 / 29380423;
+
+export class Dopri5 {
+  /** Derivative at the step's start; after an accepted step swap() makes k7 the new k1. */
+  k1 = new Float64Array(DIM);
+  private k2 = new Float64Array(DIM);
+  private k3 = new Float64Array(DIM);
+  private k4 = new Float64Array(DIM);
+  private k5 = new Float64Array(DIM);
+  private k6 = new Float64Array(DIM);
+  k7 = new Float64Array(DIM);
+  private yt = new Float64Array(DIM);
+  /** The step's end (5th order). */
+  readonly y1 = new Float64Array(DIM);
+  /** Max over components of |error estimate| / atol. */
+  err = 0;
+  private h = 0;
+  private readonly r1 = new Float64Array(DIM);
+  private readonly r2 = new Float64Array(DIM);
+  private readonly r3 = new Float64Array(DIM);
+  private readonly r4 = new Float64Array(DIM);
+  private readonly r5 = new Float64Array(DIM);
+
+  /** One step of size h from y (k1 must hold f(y)). Fills y1, k7 and err. */
+  step(model: CushionModel, y: Float64Array, h: number, atol: Float64Array): void {
+    const { k1, k2, k3, k4, k5, k6, k7, yt, y1 } = this;
+    this.h = h;
+    for (let i = 0; i < DIM; i++) yt[i] = y[i]! + h * (A21 * k1[i]!);
+    model.derivative(yt, k2);
+    for (let i = 0; i < DIM; i++) yt[i] = y[i]! + h * (A31 * k1[i]! + A32 * k2[i]!);
+    model.derivative(yt, k3);
+    for (let i = 0; i < DIM; i++) yt[i] = y[i]! + h * (A41 * k1[i]! + A42 * k2[i]! + A43 * k3[i]!);
+    model.derivative(yt, k4);
+    for (let i = 0; i < DIM; i++) {
+      yt[i] = y[i]! + h * (A51 * k1[i]! + A52 * k2[i]! + A53 * k3[i]! + A54 * k4[i]!);
+    }
+    model.derivative(yt, k5);
+    for (let i = 0; i < DIM; i++) {
+      yt[i] = y[i]! + h * (A61 * k1[i]! + A62 * k2[i]! + A63 * k3[i]! + A64 * k4[i]! + A65 * k5[i]!);
+    }
+    model.derivative(yt, k6);
+    for (let i = 0; i < DIM; i++) {
+      y1[i] = y[i]! + h * (B1 * k1[i]! + B3 * k3[i]! + B4 * k4[i]! + B5 * k5[i]! + B6 * k6[i]!);
+    }
+    model.derivative(y1, k7);
+    let err = 0;
+    for (let i = 0; i < DIM; i++) {
+      const e = h * (E1 * k1[i]! + E3 * k3[i]! + E4 * k4[i]! + E5 * k5[i]! + E6 * k6[i]! + E7 * k7[i]!);
+      const r = Math.abs(e) / atol[i]!;
+      if (r > err) err = r;
+    }
+    this.err = err;
+  }
+
+  /** After an accepted step: the end's derivative becomes the next start's (FSAL). */
+  swap(): void {
+    const t = this.k1;
+    this.k1 = this.k7;
+    this.k7 = t;
+  }
+
+  /** Prepares the continuous extension of the last step taken from y (before swap()). */
+  prepareDense(y: Float64Array): void {
+    const { k1, k3, k4, k5, k6, k7, y1, r1, r2, r3, r4, r5 } = this;
+    const h = this.h;
+    for (let i = 0; i < DIM; i++) {
+      const dy = y1[i]! - y[i]!;
+      const b = h * k1[i]! - dy;
+      r1[i] = y[i]!;
+      r2[i] = dy;
+      r3[i] = b;
+      r4[i] = dy - h * k7[i]! - b;
+      r5[i] = h * (D1 * k1[i]! + D3 * k3[i]! + D4 * k4[i]! + D5 * k5[i]! + D6 * k6[i]! + D7 * k7[i]!);
+    }
+  }
+
+  /** Component i of the continuous extension at fraction theta of the step. */
+  denseAt(theta: number, i: number): number {
+    const t1 = 1 - theta;
+    return this.r1[i]! + theta * (this.r2[i]! + t1 * (this.r3[i]! + theta * (this.r4[i]! + t1 * this.r5[i]!)));
+  }
+
+  /** The whole state at fraction theta of the step. */
+  denseAll(theta: number, out: Float64Array): void {
+    for (let i = 0; i < DIM; i++) out[i] = this.denseAt(theta, i);
+  }
+}

@@ -1,0 +1,421 @@
+// The equations of motion of a ball against a cushion, integrated in the impulse
+// (Mathavan, Jackson and Parkin 2010, "A theoretical analysis of billiard ball dynamics under
+// cushion impacts", Proc. IMechE C 224(9), eqs. 9-15; see ../shared/physics.md).
+//
+// Internal variables, chosen so that every quantity is a speed:
+//   y = [vx, vy, Ox, Oy, Oz, W] with O = R ω (m/s) and W the work of the normal force at the
+//   cushion contact I per unit mass (J/kg); the independent variable is p = P / M (m/s).
+// With q = 1/M these turn the paper's eq. 14 into
+//   dvx/dp = gx + hx                 dOx/dp = 5/2 (gy + hy)
+//   dvy/dp = -cosθ - sinθ gy + hy    dOy/dp = 5/2 (sinθ gx - hx)
+//   dW/dp  = cosθ vy                 dOz/dp = -5/2 cosθ gx
+// where (gx, gy) is the friction at I per unit normal impulse, in the tangent basis
+// (e_x, t) with t = (0, -sinθ, cosθ), and (hx, hy) the friction at the table contact C per unit
+// impulse at I. While both contacts slip (the paper's eq. 14):
+//   g = -μw (cos φ, sin φ),   h = -μs A (cos φ', sin φ'),   A = sinθ - cosθ gy
+// (A = sinθ + μw sinφ cosθ is the table's normal impulse per unit impulse at I; the table pushes
+// and never pulls, so A is clamped at 0, a case the paper's constants never reach).
+//
+// Slip velocities (paper eqs. 12, 13):
+//   xI = vx + sinθ Oy - cosθ Oz    yI = -sinθ vy + Ox
+//   xC = vx - Oy                   yC = vy + Ox
+// whose rates follow from the equations above:
+//   dxI/dp = 7/2 gx + (1 - 5/2 sinθ) hx
+//   dyI/dp = sinθ cosθ + (sin²θ + 5/2) gy + (5/2 - sinθ) hy
+//   dxC/dp = (1 - 5/2 sinθ) gx + 7/2 hx
+//   dyC/dp = -cosθ + (5/2 - sinθ) gy + 7/2 hy
+// When a slip is zero the paper's rolling conditions (its eqs. 15a, 15b) hold: the friction of
+// that contact is whatever keeps the slip zero, found by setting its two rates to zero, as long
+// as it stays inside the friction cone. Only + - * / and Math.sqrt are used (cos φ = xI / s).
+
+export const SLIDE = 0;
+export const STICK = 1;
+export type ContactMode = typeof SLIDE | typeof STICK;
+
+/**
+ * The friction model with its per-impact constants and the mode of each contact. One object is
+ * reused across impacts; all scratch values are plain number fields (no allocation).
+ */
+export class CushionModel {
+  /** sin θ, cos θ of the cushion contact (sin θ = (h - R) / R). */
+  s = 0;
+  c = 0;
+  muW = 0;
+  muS = 0;
+  /** (2/7)(1 - 5/2 sinθ), (2/7) cosθ, (2/7)(5/2 - sinθ): the rolling-condition coefficients. */
+  private q1 = 0;
+  private q2 = 0;
+  private q3 = 0;
+
+  modeI: ContactMode = SLIDE;
+  modeC: ContactMode = SLIDE;
+  /**
+   * Slip left over when a contact was declared stuck (at most the event tolerance). The
+   * direction of a slipping contact is taken from (slip - offset), so that after it leaves the
+   * stick branch its direction grows from exactly zero.
+   */
+  offIx = 0;
+  offIy = 0;
+  offCx = 0;
+  offCy = 0;
+  /** Direction used while a slipping contact's (slip - offset) is below epsSlip (onset). */
+  hintIx = 1;
+  hintIy = 0;
+  hintCx = 1;
+  hintCy = 0;
+  epsSlip = 0;
+
+  /**
+   * Unit slip directions at the step's start and the smallest stage components of the slips
+   * along them, to detect a slip passing zero inside a step.
+   */
+  refIx = 0;
+  refIy = 0;
+  refCx = 0;
+  refCy = 0;
+  minDotI = 0;
+  minDotC = 0;
+  /** True only inside an integration step: enables the continuation past a zero slip. */
+  stepping = false;
+
+  /** Frictions and table normal of the last evaluation. */
+  gx = 0;
+  gy = 0;
+  hx = 0;
+  hy = 0;
+  nC = 0;
+
+  setConstants(s: number, c: number, muW: number, muS: number): void {
+    this.s = s;
+    this.c = c;
+    this.muW = muW;
+    this.muS = muS;
+    this.q1 = (2 / 7) * (1 - 2.5 * s);
+    this.q2 = (2 / 7) * c;
+    this.q3 = (2 / 7) * (2.5 - s);
+    this.modeI = SLIDE;
+    this.modeC = SLIDE;
+    this.offIx = 0;
+    this.offIy = 0;
+    this.offCx = 0;
+    this.offCy = 0;
+    this.hintIx = 1;
+    this.hintIy = 0;
+    this.hintCx = 1;
+    this.hintCy = 0;
+  }
+
+  /** Effective slip at I (slip minus offset). */
+  slipIx(y: Float64Array): number {
+    return y[0]! + this.s * y[3]! - this.c * y[4]! - this.offIx;
+  }
+  slipIy(y: Float64Array): number {
+    return -this.s * y[1]! + y[2]! - this.offIy;
+  }
+  slipCx(y: Float64Array): number {
+    return y[0]! - y[3]! - this.offCx;
+  }
+  slipCy(y: Float64Array): number {
+    return y[1]! + y[2]! - this.offCy;
+  }
+  /** Rates of the slips from a derivative vector k (linear in k). */
+  rateIx(k: Float64Array): number {
+    return k[0]! + this.s * k[3]! - this.c * k[4]!;
+  }
+  rateIy(k: Float64Array): number {
+    return -this.s * k[1]! + k[2]!;
+  }
+  rateCx(k: Float64Array): number {
+    return k[0]! - k[3]!;
+  }
+  rateCy(k: Float64Array): number {
+    return k[1]! + k[2]!;
+  }
+
+  /**
+   * Frictions g, h and table normal nC at state (vx, vy, Ox, Oy, Oz) in the current modes.
+   * Also records, for a slipping contact, the dot product of its slip with the reference
+   * direction (a negative value means the slip went through zero inside a step).
+   */
+  friction(vx: number, vy: number, ox: number, oy: number, oz: number): void {
+    const s = this.s;
+    const c = this.c;
+    let gx: number;
+    let gy: number;
+    let hx: number;
+    let hy: number;
+    let n: number;
+    if (this.modeI === SLIDE) {
+      this.directionI(vx + s * oy - c * oz - this.offIx, -s * vy + ox - this.offIy);
+      gx = -this.muW * this.ux;
+      gy = -this.muW * this.uy;
+      n = s - c * gy;
+      if (n < 0) n = 0;
+      if (this.modeC === SLIDE) {
+        this.directionC(vx - oy - this.offCx, vy + ox - this.offCy);
+        const m = this.muS * n;
+        hx = -m * this.ux;
+        hy = -m * this.uy;
+      } else {
+        // C rolls (eq. 15b): dxC/dp = dyC/dp = 0.
+        hx = -this.q1 * gx;
+        hy = this.q2 - this.q3 * gy;
+      }
+    } else if (this.modeC === SLIDE) {
+      // I rolls (eq. 15a), C slips: dxI/dp = dyI/dp = 0 with h = -μs (s - c gy) u_C.
+      this.directionC(vx - oy - this.offCx, vy + ox - this.offCy);
+      const fx = this.ux;
+      const fy = this.uy;
+      const k = (2.5 - s) * this.muS * fy;
+      // den > 0 whenever this branch is feasible (checked on entry, see stickMargin).
+      const den = s * s + 2.5 + k * c;
+      gy = (k * s - s * c) / den;
+      n = s - c * gy;
+      const m = this.muS * n;
+      hx = -m * fx;
+      hy = -m * fy;
+      gx = -this.q1 * hx;
+    } else {
+      // Both roll: the rolling conditions give g = (0, -c/(1+s)), h = (0, c/(1+s)), A = 1,
+      // and every rate is zero (this only happens with vy = 0; the solver ends there).
+      gx = 0;
+      gy = -c / (1 + s);
+      hx = 0;
+      hy = c / (1 + s);
+      n = 1;
+    }
+    this.gx = gx;
+    this.gy = gy;
+    this.hx = hx;
+    this.hy = hy;
+    this.nC = n;
+  }
+
+  /**
+   * Unit slip direction of I into (ux, uy). Below epsSlip the onset hint; where the slip has
+   * gone through zero inside a step (no longer along the step's starting direction) the
+   * starting direction: the sliding equations continued smoothly, so that a step aimed at the
+   * zero may land a hair beyond it (the solver rejects deeper crossings).
+   */
+  private directionI(ex: number, ey: number): void {
+    const d = ex * this.refIx + ey * this.refIy;
+    if (d < this.minDotI) this.minDotI = d;
+    const r = Math.sqrt(ex * ex + ey * ey);
+    if (this.stepping && (d <= 0 || r <= this.epsSlip)) {
+      // (At the onset of slip the step's starting direction is the hint.)
+      this.ux = this.refIx;
+      this.uy = this.refIy;
+    } else if (r <= this.epsSlip) {
+      this.ux = this.hintIx;
+      this.uy = this.hintIy;
+    } else {
+      this.ux = ex / r;
+      this.uy = ey / r;
+    }
+  }
+
+  /** As directionI, for C. */
+  private directionC(ex: number, ey: number): void {
+    const d = ex * this.refCx + ey * this.refCy;
+    if (d < this.minDotC) this.minDotC = d;
+    const r = Math.sqrt(ex * ex + ey * ey);
+    if (this.stepping && (d <= 0 || r <= this.epsSlip)) {
+      // (At the onset of slip the step's starting direction is the hint.)
+      this.ux = this.refCx;
+      this.uy = this.refCy;
+    } else if (r <= this.epsSlip) {
+      this.ux = this.hintCx;
+      this.uy = this.hintCy;
+    } else {
+      this.ux = ex / r;
+      this.uy = ey / r;
+    }
+  }
+
+  /** dy/dp at y, written into out. */
+  derivative(y: Float64Array, out: Float64Array): void {
+    const vy = y[1]!;
+    this.friction(y[0]!, vy, y[2]!, y[3]!, y[4]!);
+    const gx = this.gx;
+    const gy = this.gy;
+    const hx = this.hx;
+    const hy = this.hy;
+    const s = this.s;
+    const c = this.c;
+    out[0] = gx + hx;
+    out[1] = -c - s * gy + hy;
+    out[2] = 2.5 * (gy + hy);
+    out[3] = 2.5 * (s * gx - hx);
+    out[4] = -2.5 * c * gx;
+    out[5] = c * vy;
+  }
+
+  /**
+   * How far the stuck contacts are from leaving the friction cone at y: max over stuck
+   * contacts of |friction| - μ × normal (per unit impulse at I). Positive means a stuck
+   * contact cannot stay stuck. Returns -1 when no contact is stuck.
+   */
+  stickMargin(y: Float64Array): number {
+    if (this.modeI === SLIDE && this.modeC === SLIDE) return -1;
+    const saveI = this.minDotI;
+    const saveC = this.minDotC;
+    this.friction(y[0]!, y[1]!, y[2]!, y[3]!, y[4]!);
+    this.minDotI = saveI;
+    this.minDotC = saveC;
+    let margin = -1;
+    if (this.modeI === STICK) {
+      if (this.modeC === SLIDE && !(this.nC > 0)) return 1; // the rolling branch has no solution
+      margin = Math.sqrt(this.gx * this.gx + this.gy * this.gy) - this.muW;
+    }
+    if (this.modeC === STICK) {
+      const n = this.nC > 0 ? this.nC : 0;
+      const m = Math.sqrt(this.hx * this.hx + this.hy * this.hy) - this.muS * n;
+      if (m > margin) margin = m;
+    }
+    return margin;
+  }
+
+  /**
+   * Contact C's slip is zero and I slips (direction from y, or I's hint): does C roll (true)? If not,
+   * its slip starts opposite to the friction rolling would need (its slip rates are isotropic
+   * in h, so that is the exact onset direction), stored as C's hint.
+   */
+  onsetC(y: Float64Array): boolean {
+    this.modeC = STICK;
+    this.friction(y[0]!, y[1]!, y[2]!, y[3]!, y[4]!);
+    const hx = this.hx;
+    const hy = this.hy;
+    const n = this.nC > 0 ? this.nC : 0;
+    const norm = Math.sqrt(hx * hx + hy * hy);
+    if (norm <= this.muS * n) return true;
+    this.modeC = SLIDE;
+    this.hintCx = -hx / norm;
+    this.hintCy = -hy / norm;
+    return false;
+  }
+
+  /**
+   * Contact I's slip is zero and C slips (direction from y, or C's hint): does I roll (true)? If not,
+   * the direction u in which its slip starts solves (λ + μw B) u = a, |u| = 1, λ >= 0, where
+   * a + B g are I's slip rates as an affine function of its friction g (see onsetDirection).
+   */
+  onsetI(y: Float64Array): boolean {
+    const s = this.s;
+    const c = this.c;
+    this.modeI = STICK;
+    this.friction(y[0]!, y[1]!, y[2]!, y[3]!, y[4]!);
+    // The rolling branch exists only while its denominator is positive, i.e. nC > 0.
+    if (this.nC > 0 && this.gx * this.gx + this.gy * this.gy <= this.muW * this.muW) return true;
+    this.modeI = SLIDE;
+    // C's slip direction (as friction() would take it).
+    let fx = y[0]! - y[3]! - this.offCx;
+    let fy = y[1]! + y[2]! - this.offCy;
+    const rc = Math.sqrt(fx * fx + fy * fy);
+    if (rc > this.epsSlip) {
+      fx /= rc;
+      fy /= rc;
+    } else {
+      fx = this.hintCx;
+      fy = this.hintCy;
+    }
+    // dxI/dp = 7/2 gx + (1 - 5/2 s) hx, dyI/dp = s c + (s² + 5/2) gy + (5/2 - s) hy,
+    // h = -μs (s - c gy) u_C: affine in g.
+    const ms = this.muS;
+    const ax = -(1 - 2.5 * s) * ms * s * fx;
+    const ay = s * c - (2.5 - s) * ms * s * fy;
+    const b11 = 3.5;
+    const b12 = (1 - 2.5 * s) * ms * c * fx;
+    const b22 = s * s + 2.5 + (2.5 - s) * ms * c * fy;
+    this.onsetDirection(ax, ay, b11, b12, b22);
+    this.hintIx = this.ux;
+    this.hintIy = this.uy;
+    return false;
+  }
+
+  /**
+   * Both slips are zero (which needs vy = 0). Both roll if the constant rolling frictions
+   * c/(1+s) fit in both cones (then nothing changes any more: the solver ends). Otherwise C
+   * rolls and I slips if that is consistent (I's onset from its rates with C rolling:
+   * dxI/dp = K1 gx, dyI/dp = 5/7 (1+s) c + K3 gy); otherwise both slip, I upward and C
+   * downward along t and y, the directions opposite to the frictions both-rolling would need
+   * (an approximation for this measure-zero case, documented in docs/cushion.md).
+   */
+  onsetBoth(): boolean {
+    const s = this.s;
+    const c = this.c;
+    const f = c / (1 + s);
+    if (f <= this.muW && f <= this.muS) {
+      this.modeI = STICK;
+      this.modeC = STICK;
+      return true;
+    }
+    const k1 = 3.5 - (2 / 7) * (1 - 2.5 * s) * (1 - 2.5 * s);
+    const k3 = s * s + 2.5 - (2 / 7) * (2.5 - s) * (2.5 - s);
+    this.onsetDirection(0, (5 / 7) * (1 + s) * c, k1, 0, k3);
+    const gx = -this.muW * this.ux;
+    const gy = -this.muW * this.uy;
+    const hx = -this.q1 * gx;
+    const hy = this.q2 - this.q3 * gy;
+    let n = s - c * gy;
+    if (n < 0) n = 0;
+    this.modeI = SLIDE;
+    this.hintIx = this.ux;
+    this.hintIy = this.uy;
+    if (hx * hx + hy * hy <= this.muS * n * (this.muS * n)) {
+      this.modeC = STICK;
+      return false;
+    }
+    this.modeC = SLIDE;
+    this.hintIx = 0;
+    this.hintIy = 1;
+    this.hintCx = 0;
+    this.hintCy = -1;
+    return false;
+  }
+
+  /** Output of onsetDirection. */
+  ux = 1;
+  uy = 0;
+
+  /**
+   * The unit vector u with (λ I + μw B) u = a for some λ >= 0, B = [[b11, b12], [0, b22]]:
+   * the direction in which a slip starts from zero when its rates are a + B g and g = -μw u
+   * (the slip must then grow along u). Bisection on λ; a fixed number of halvings, so it always
+   * ends. When μw = 0, u = a / |a|.
+   */
+  private onsetDirection(ax: number, ay: number, b11: number, b12: number, b22: number): void {
+    const mu = this.muW;
+    const an = Math.sqrt(ax * ax + ay * ay);
+    if (!(an > 0)) {
+      this.ux = 1;
+      this.uy = 0;
+      return;
+    }
+    // Lowest λ for which both diagonal entries are positive.
+    let lo = 0;
+    if (-mu * b11 > lo) lo = -mu * b11;
+    if (-mu * b22 > lo) lo = -mu * b22;
+    // Above hi = lo + |a| + μ |b12| + 1e-300 every |u| < 1 ... grow until |u(hi)| <= 1.
+    let hi = lo + an + mu * Math.abs(b12);
+    for (let i = 0; i < 200 && this.uNorm2(hi, ax, ay, b11, b12, b22) > 1; i++) hi *= 2;
+    for (let i = 0; i < 200; i++) {
+      const mid = 0.5 * (lo + hi);
+      if (!(mid > lo && mid < hi)) break;
+      if (this.uNorm2(mid, ax, ay, b11, b12, b22) > 1) lo = mid;
+      else hi = mid;
+    }
+    this.uNorm2(hi, ax, ay, b11, b12, b22);
+    const un = Math.sqrt(this.ux * this.ux + this.uy * this.uy);
+    this.ux /= un;
+    this.uy /= un;
+  }
+
+  private uNorm2(lam: number, ax: number, ay: number, b11: number, b12: number, b22: number): number {
+    const mu = this.muW;
+    const uy = ay / (lam + mu * b22);
+    const ux = (ax - mu * b12 * uy) / (lam + mu * b11);
+    this.ux = ux;
+    this.uy = uy;
+    return ux * ux + uy * uy;
+  }
+}

@@ -1,0 +1,463 @@
+// The event-driven integration of one cushion impact in the impulse (Mathavan et al. 2010):
+// compression until vy = 0 (work W_c), restitution until the work done since then reaches
+// e_e² W_c. Between events an adaptive Dormand-Prince 5(4) step (cushion-dopri.ts); the events:
+//  - a slipping contact's slip reaches zero: predicted from its rate and stepped onto
+//    (a Newton iteration on the slip speed), then the rolling conditions (eqs. 15a/15b) decide
+//    whether the contact rolls (sticks) or keeps slipping in a new direction;
+//  - a rolling contact needs more friction than μ × its normal: located on the continuous
+//    extension (the rolling branch is smooth through that point), the contact starts to slip;
+//  - vy = 0 (end of compression, W_c recorded) and the work target (end), located on the
+//    continuous extension;
+//  - the ball can recede no more although the target is not reached ('stalled', see
+//    cushion-types.ts): ends there with vy = 0.
+// Only + - * / and Math.sqrt. A step count cap throws: it never returns a wrong answer.
+import { Dopri5, DIM } from './cushion-dopri.ts';
+import { CushionModel, SLIDE, STICK } from './cushion-model.ts';
+import type { CushionOutcome } from './cushion-types.ts';
+
+/** Steps (accepted or rejected) after which the solver gives up with an Error. */
+export const MAX_STEPS = 20000;
+/** A slip below this fraction of the step tolerance counts as zero (slip-zero event). */
+const EVENT_FRACTION = 0.01;
+/** An initial slip below this fraction of the speed counts as exactly zero. */
+const ZERO_FRACTION = 1e-13;
+/** Slip below this fraction of the speed: a slipping contact uses its onset direction. */
+const HINT_FRACTION = 1e-14;
+
+const COMPRESSION = 0;
+const RESTITUTION = 1;
+
+// Event functions on the continuous extension, signed so that > 0 is before the event.
+const EV_VY = 0;
+const EV_VY_BACK = 1;
+const EV_WORK = 2;
+const EV_STICK = 3;
+
+/** One sample of the impact's history (for figures and checks). */
+export interface CushionTracePoint {
+  /** Impulse at the cushion so far (N s). */
+  readonly P: number;
+  readonly vx: number;
+  readonly vy: number;
+  readonly wx: number;
+  readonly wy: number;
+  readonly wz: number;
+  /** Slip velocity components at I (cushion) and C (table), m/s. */
+  readonly xI: number;
+  readonly yI: number;
+  readonly xC: number;
+  readonly yC: number;
+  /** Work of the normal force at I so far (J); falls during restitution. */
+  readonly W: number;
+  readonly stickI: boolean;
+  readonly stickC: boolean;
+}
+
+export class CushionSolver {
+  private readonly model = new CushionModel();
+  private readonly rk = new Dopri5();
+  /** Current state (then the result) in internal variables [vx, vy, R wx, R wy, R wz, W]. */
+  readonly y = new Float64Array(DIM);
+  private readonly ye = new Float64Array(DIM);
+  private readonly kd = new Float64Array(DIM);
+  private readonly atol = new Float64Array(DIM);
+  private p = 0;
+  private phase = COMPRESSION;
+  private wEnd = 0;
+  private epsEv = 0;
+  private M = 1;
+  private R = 1;
+  /** How the last impact ended. */
+  outcome: CushionOutcome = 'restitution';
+  /** Steps taken (accepted and rejected) by the last impact. */
+  steps = 0;
+  rejected = 0;
+  /** When set, every accepted step appends samples here. */
+  trace: CushionTracePoint[] | null = null;
+
+  /**
+   * Integrates one impact with vy > 0 (checked by the caller). The result is left in y
+   * (internal variables) and outcome.
+   */
+  solve(
+    vx: number, vy: number, wx: number, wy: number, wz: number,
+    M: number, R: number, h: number, ee: number, muS: number, muW: number,
+    tol: number,
+  ): void {
+    const model = this.model;
+    const rk = this.rk;
+    const y = this.y;
+    const s = (h - R) / R;
+    const c = Math.sqrt((1 - s) * (1 + s));
+    model.setConstants(s, c, muW, muS);
+    this.M = M;
+    this.R = R;
+    y[0] = vx;
+    y[1] = vy;
+    y[2] = R * wx;
+    y[3] = R * wy;
+    y[4] = R * wz;
+    y[5] = 0;
+    const V = Math.sqrt(vx * vx + vy * vy);
+    const at = tol * V;
+    const atol = this.atol;
+    for (let i = 0; i < 5; i++) atol[i] = at;
+    // The end is where W meets its target: an error dW moves it by dW / (c |vy|).
+    atol[5] = at * c * vy;
+    this.epsEv = EVENT_FRACTION * at;
+    model.epsSlip = HINT_FRACTION * V;
+    this.p = 0;
+    this.phase = COMPRESSION;
+    this.wEnd = 0;
+    this.steps = 0;
+    this.rejected = 0;
+    this.outcome = 'restitution';
+    const ee2 = ee * ee;
+
+    // A slip that is zero at the start (e.g. a ball rolling on the cloth).
+    const eps0 = ZERO_FRACTION * V;
+    const zI = this.slipNorm(0) <= eps0;
+    const zC = this.slipNorm(1) <= eps0;
+    if ((zI || zC) && this.enterZero(zI, zC)) {
+      this.finishStalled();
+      return;
+    }
+    model.derivative(y, rk.k1);
+    this.recordTrace(0, 0);
+
+    let step = 0.25 * vy / c;
+    for (;;) {
+      if (++this.steps > MAX_STEPS) {
+        throw new Error(
+          `cushionRebound: no end after ${MAX_STEPS} steps (P = ${this.p * M} N s, state ${Array.from(y).join(', ')})`,
+        );
+      }
+      // Slip-zero prediction: do not step past the point where a slip speed reaches zero.
+      let aim = false;
+      if (model.modeI === SLIDE) {
+        const ex = model.slipIx(y);
+        const ey = model.slipIy(y);
+        const r = Math.sqrt(ex * ex + ey * ey);
+        if (r > model.epsSlip) {
+          model.refIx = ex / r;
+          model.refIy = ey / r;
+          const rate = (ex * model.rateIx(rk.k1) + ey * model.rateIy(rk.k1)) / r;
+          if (rate < 0 && r <= -rate * step) {
+            step = -r / rate;
+            aim = true;
+          }
+        } else {
+          model.refIx = model.hintIx;
+          model.refIy = model.hintIy;
+        }
+      }
+      if (model.modeC === SLIDE) {
+        const ex = model.slipCx(y);
+        const ey = model.slipCy(y);
+        const r = Math.sqrt(ex * ex + ey * ey);
+        if (r > model.epsSlip) {
+          model.refCx = ex / r;
+          model.refCy = ey / r;
+          const rate = (ex * model.rateCx(rk.k1) + ey * model.rateCy(rk.k1)) / r;
+          if (rate < 0 && r <= -rate * step) {
+            step = -r / rate;
+            aim = true;
+          }
+        } else {
+          model.refCx = model.hintCx;
+          model.refCy = model.hintCy;
+        }
+      }
+      model.minDotI = Infinity;
+      model.minDotC = Infinity;
+      model.stepping = true;
+      rk.step(model, y, step, atol);
+      model.stepping = false;
+      const tol0 = -this.epsEv;
+      if (model.minDotI < tol0 || model.minDotC < tol0) {
+        // A slip went through zero inside the step (deeper than the event tolerance): the
+        // sliding equations do not hold past it. Retry up to the interpolated zero.
+        this.rejected++;
+        let t = 0.5;
+        if (model.minDotI < tol0) t = Math.min(t, this.crossing(0));
+        if (model.minDotC < tol0) t = Math.min(t, this.crossing(1));
+        step *= t;
+        continue;
+      }
+      const err = rk.err; if (process.env.DBG) console.log("try", this.p.toExponential(5), step.toExponential(3), aim, model.modeI, model.modeC, model.minDotI.toExponential(2), model.minDotC.toExponential(2), err.toExponential(2), this.slipNorm(0).toExponential(3), this.slipNorm(1).toExponential(3));
+      if (err > 1) {
+        this.rejected++;
+        step *= Math.max(0.2, 0.9 * invRoot(err));
+        continue;
+      }
+
+      // Accepted. Events located on the continuous extension, in order.
+      let stop = 1;
+      let leave = false;
+      let dense = false;
+      if ((model.modeI === STICK || model.modeC === STICK) && model.stickMargin(rk.y1) > 0) {
+        rk.prepareDense(y);
+        dense = true;
+        stop = this.root(EV_STICK, 0, 0, 1);
+        leave = true;
+      }
+      let endAt = -1;
+      let from = 0;
+      const ys = this.ye;
+      if (stop < 1) rk.denseAll(stop, ys);
+      else ys.set(rk.y1);
+      if (this.phase === COMPRESSION && ys[1]! <= 0) {
+        if (!dense) {
+          rk.prepareDense(y);
+          dense = true;
+        }
+        from = this.root(EV_VY, 0, 0, stop);
+        rk.denseAll(from, this.ye);
+        const wc = this.ye[5]!;
+        this.wEnd = wc - ee2 * wc;
+        this.phase = RESTITUTION;
+        model.derivative(this.ye, this.kd);
+        if (ee2 === 0) {
+          endAt = from;
+        } else if (!(this.kd[1]! < 0)) {
+          // The impulse no longer pushes the ball out: restitution can do no work.
+          endAt = from;
+          this.outcome = 'stalled';
+        }
+        if (stop < 1) rk.denseAll(stop, ys);
+        else ys.set(rk.y1);
+      }
+      if (endAt < 0 && this.phase === RESTITUTION) {
+        if (ys[5]! <= this.wEnd) {
+          if (!dense) {
+            rk.prepareDense(y);
+            dense = true;
+          }
+          endAt = this.root(EV_WORK, this.wEnd, from, stop);
+        } else if (ys[1]! >= 0) {
+          // vy came back to zero before the work reached its target: it can only fall now.
+          if (!dense) {
+            rk.prepareDense(y);
+            dense = true;
+          }
+          // (When compression ended inside this same step the crossing cannot be bracketed;
+          // the step's end is used, an approximation for a case only huge friction reaches.)
+          if (from > 0) endAt = stop;
+          else if (y[1]! >= 0) endAt = 0;
+          else endAt = this.root(EV_VY_BACK, 0, 0, stop);
+          this.outcome = 'stalled';
+        }
+      }
+      if (endAt >= 0) {
+        if (endAt < 1) rk.denseAll(endAt, this.ye);
+        else this.ye.set(rk.y1);
+        this.recordTrace(step, endAt);
+        y.set(this.ye);
+        this.p += endAt * step;
+        if (this.outcome === 'stalled') y[1] = 0;
+        return;
+      }
+      if (leave) {
+        this.recordTrace(step, stop);
+        rk.denseAll(stop, y);
+        this.p += stop * step;
+        this.leaveStick();
+        model.derivative(y, rk.k1);
+        continue;
+      }
+      if (this.trace !== null) {
+        if (!dense) rk.prepareDense(y);
+        this.recordTrace(step, 1);
+      }
+      // Slip-zero event: a slipping contact's slip fell (nearly) to zero.
+      const rI0 = model.modeI === SLIDE ? this.slipNorm(0) : 0;
+      const rC0 = model.modeC === SLIDE ? this.slipNorm(1) : 0;
+      y.set(rk.y1);
+      rk.swap();
+      this.p += step;
+      const zI = model.modeI === SLIDE && this.slipNorm(0) <= this.epsEv && this.slipNorm(0) < rI0;
+      const zC = model.modeC === SLIDE && this.slipNorm(1) <= this.epsEv && this.slipNorm(1) < rC0;
+      if (zI || zC) {
+        if (this.enterZero(zI, zC)) {
+          this.finishStalled();
+          return;
+        }
+        model.derivative(y, rk.k1);
+      }
+      step *= Math.min(5, Math.max(0.2, 0.9 * invRoot(err)));
+    }
+  }
+
+  /** The result as a plain state (rad/s for the spins). */
+  result(): { vx: number; vy: number; wx: number; wy: number; wz: number } {
+    const y = this.y;
+    const R = this.R;
+    // + 0 turns -0 into 0.
+    return { vx: y[0]! + 0, vy: y[1]! + 0, wx: y[2]! / R + 0, wy: y[3]! / R + 0, wz: y[4]! / R + 0 };
+  }
+
+  /**
+   * Fraction of the rejected step at which contact 0 (I) or 1 (C)'s slip component along its
+   * starting direction crossed zero, interpolated linearly from the step's two ends; 0.5 when
+   * the end did not cross (a crossing and return inside the step).
+   */
+  private crossing(contact: number): number {
+    const m = this.model;
+    const y = this.y;
+    const y1 = this.rk.y1;
+    const d0 = contact === 0
+      ? m.slipIx(y) * m.refIx + m.slipIy(y) * m.refIy
+      : m.slipCx(y) * m.refCx + m.slipCy(y) * m.refCy;
+    const d1 = contact === 0
+      ? m.slipIx(y1) * m.refIx + m.slipIy(y1) * m.refIy
+      : m.slipCx(y1) * m.refCx + m.slipCy(y1) * m.refCy;
+    if (!(d0 > 0 && d1 < 0)) return 0.5;
+    const t = d0 / (d0 - d1);
+    return t < 0.01 ? 0.01 : t > 0.99 ? 0.99 : t;
+  }
+
+  /** |effective slip| of contact 0 (I) or 1 (C) at the current state. */
+  private slipNorm(contact: number): number {
+    const m = this.model;
+    const y = this.y;
+    const ex = contact === 0 ? m.slipIx(y) : m.slipCx(y);
+    const ey = contact === 0 ? m.slipIy(y) : m.slipCy(y);
+    return Math.sqrt(ex * ex + ey * ey);
+  }
+
+  /**
+   * Slips of I (zI) and/or C (zC) are zero at y: record their residuals as offsets and decide
+   * with the rolling conditions what each contact does. True when both now roll (every rate
+   * is zero: the impact cannot progress).
+   */
+  private enterZero(zI: boolean, zC: boolean): boolean {
+    const m = this.model;
+    const y = this.y;
+    if (zI) {
+      m.offIx = y[0]! + m.s * y[3]! - m.c * y[4]!;
+      m.offIy = -m.s * y[1]! + y[2]!;
+    }
+    if (zC) {
+      m.offCx = y[0]! - y[3]!;
+      m.offCy = y[1]! + y[2]!;
+    }
+    const atI = zI || m.modeI === STICK;
+    const atC = zC || m.modeC === STICK;
+    if (atI && atC) return m.onsetBoth();
+    if (zC) m.onsetC(y);
+    else m.onsetI(y);
+    return false;
+  }
+
+  /** The stuck contact needs more than its friction cone: it starts to slip. */
+  private leaveStick(): void {
+    const m = this.model;
+    const y = this.y;
+    m.stickMargin(y); // fills the rolling frictions at y
+    if (m.modeI === STICK) {
+      const n = Math.sqrt(m.gx * m.gx + m.gy * m.gy);
+      m.modeI = SLIDE;
+      m.offIx = y[0]! + m.s * y[3]! - m.c * y[4]!;
+      m.offIy = -m.s * y[1]! + y[2]!;
+      if (n > 0) {
+        m.hintIx = -m.gx / n;
+        m.hintIy = -m.gy / n;
+      }
+    } else {
+      const n = Math.sqrt(m.hx * m.hx + m.hy * m.hy);
+      m.modeC = SLIDE;
+      m.offCx = y[0]! - y[3]!;
+      m.offCy = y[1]! + y[2]!;
+      if (n > 0) {
+        m.hintCx = -m.hx / n;
+        m.hintCy = -m.hy / n;
+      }
+    }
+  }
+
+  /** Both contacts roll: nothing changes any more, so restitution cannot finish. */
+  private finishStalled(): void {
+    this.outcome = 'stalled';
+    this.y[1] = 0;
+  }
+
+  /** Event function at fraction theta of the last step (> 0 before the event). */
+  private eventAt(kind: number, target: number, theta: number): number {
+    const rk = this.rk;
+    if (kind === EV_VY) return rk.denseAt(theta, 1);
+    if (kind === EV_VY_BACK) return -rk.denseAt(theta, 1);
+    if (kind === EV_WORK) return rk.denseAt(theta, 5) - target;
+    rk.denseAll(theta, this.kd);
+    return -this.model.stickMargin(this.kd);
+  }
+
+  /**
+   * The first theta in [lo, hi] where the event function reaches zero (it is > 0 at lo and
+   * <= 0 at hi, or the event is at lo): Illinois-modified regula falsi, at most 100 iterations,
+   * returning the bracket's event side.
+   */
+  private root(kind: number, target: number, lo: number, hi: number): number {
+    let flo = this.eventAt(kind, target, lo);
+    if (!(flo > 0)) return lo;
+    let fhi = this.eventAt(kind, target, hi);
+    if (fhi > 0) return hi;
+    let side = 0;
+    for (let i = 0; i < 100 && fhi !== 0 && hi - lo > 1e-15; i++) {
+      let x = lo + (hi - lo) * (flo / (flo - fhi));
+      if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
+      const fx = this.eventAt(kind, target, x);
+      if (fx > 0) {
+        lo = x;
+        flo = fx;
+        if (side === 1) fhi *= 0.5;
+        side = 1;
+      } else {
+        hi = x;
+        fhi = fx;
+        if (side === -1) flo *= 0.5;
+        side = -1;
+      }
+    }
+    return hi;
+  }
+
+  /** Appends samples of the last step (fractions up to `upTo`) when tracing. */
+  private recordTrace(step: number, upTo: number): void {
+    const trace = this.trace;
+    if (trace === null) return;
+    const n = step === 0 ? 1 : 8;
+    for (let j = step === 0 ? 0 : 1; j <= n; j++) {
+      const theta = step === 0 ? 0 : (upTo * j) / n;
+      if (step === 0) this.ye.set(this.y);
+      else this.rk.denseAll(theta, this.ye);
+      trace.push(this.samplePoint(this.p + theta * step, this.ye));
+    }
+  }
+
+  private samplePoint(p: number, y: Float64Array): CushionTracePoint {
+    const m = this.model;
+    const R = this.R;
+    return {
+      P: p * this.M,
+      vx: y[0]!,
+      vy: y[1]!,
+      wx: y[2]! / R,
+      wy: y[3]! / R,
+      wz: y[4]! / R,
+      xI: y[0]! + m.s * y[3]! - m.c * y[4]!,
+      yI: -m.s * y[1]! + y[2]!,
+      xC: y[0]! - y[3]!,
+      yC: y[1]! + y[2]!,
+      W: y[5]! * this.M,
+      stickI: m.modeI === STICK,
+      stickC: m.modeC === STICK,
+    };
+  }
+}
+
+/** err^(-3/16) with four square roots: the step-size factor (the optimal exponent is 1/5). */
+function invRoot(err: number): number {
+  if (!(err > 1e-30)) return 1e6;
+  const q = Math.sqrt(Math.sqrt(Math.sqrt(Math.sqrt(err))));
+  return 1 / (q * q * q);
+}

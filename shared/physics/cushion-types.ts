@@ -1,0 +1,62 @@
+// Public types of the cushion-impact kernel (Mathavan, Jackson and Parkin 2010).
+// Frame (the paper's): x along the cushion, y perpendicular to it pointing into the cushion
+// (vy > 0 approaches), z up, right-handed. SI units.
+
+/** Ball velocity (m/s) and angular velocity (rad/s) in the cushion frame. */
+export interface CushionState {
+  readonly vx: number;
+  readonly vy: number;
+  readonly wx: number;
+  readonly wy: number;
+  readonly wz: number;
+}
+
+/** Physical constants of one impact. */
+export interface CushionParams {
+  /** Ball mass (kg), > 0. */
+  readonly M: number;
+  /** Ball radius (m), > 0. */
+  readonly R: number;
+  /** Height of the cushion nose above the cloth (m), in (R, 2R); sin θ = (h - R) / R. */
+  readonly h: number;
+  /** Cushion restitution e_e in [0, 1]: restitution work = e_e² × compression work. */
+  readonly ee: number;
+  /** Ball-table (sliding) friction μ_s >= 0. */
+  readonly muS: number;
+  /** Ball-cushion friction μ_w >= 0. */
+  readonly muW: number;
+}
+
+/**
+ * Named accuracy settings. Each is a local error tolerance of the integrator, relative to the
+ * ball's speed; `docs/cushion.md` lists what each costs and the error it gives.
+ */
+export type CushionToleranceName = 'accurate' | 'balanced' | 'fast';
+
+export interface CushionOptions {
+  /**
+   * A named setting, or a number in [1e-12, 1e-2]: the per-step error tolerance relative to the
+   * ball's speed. Default 'accurate'.
+   */
+  readonly tolerance?: CushionToleranceName | number;
+}
+
+/** How the impact ended (see docs/cushion.md, "Outcomes"). */
+export type CushionOutcome =
+  /** vy <= 0 on entry: no impact, the state is returned unchanged. */
+  | 'no-impact'
+  /** The restitution work reached e_e² times the compression work: the normal case. */
+  | 'restitution'
+  /**
+   * The restitution work can never reach its target: after compression the ball stopped receding
+   * from the cushion (vy back at 0 with the impulse pushing it in, or both contacts rolling).
+   * The kernel returns the state at that instant with vy = 0.
+   */
+  | 'stalled';
+
+/** Tolerance of each named setting (relative local error per step). */
+export const CUSHION_TOLERANCES: Readonly<Record<CushionToleranceName, number>> = {
+  accurate: 1e-8,
+  balanced: 1e-6,
+  fast: 1e-4,
+};

@@ -1,0 +1,82 @@
+// The cushion impact: public entry points. The model is Mathavan, Jackson and Parkin (2010),
+// "A theoretical analysis of billiard ball dynamics under cushion impacts", Proc. IMechE C
+// 224(9):1863-1873; the method (an adaptive Runge-Kutta integration in the impulse with the
+// paper's rolling conditions at zero slip) is described in docs/cushion.md.
+import { CushionSolver } from './cushion-solver.ts';
+import type { CushionTracePoint } from './cushion-solver.ts';
+import type { CushionOptions, CushionOutcome, CushionParams, CushionState } from './cushion-types.ts';
+import { resolveTolerance, validateParams, validateState } from './cushion-validate.ts';
+
+/** A plain, mutable copy of a state. */
+export interface CushionStateOut {
+  vx: number;
+  vy: number;
+  wx: number;
+  wy: number;
+  wz: number;
+}
+
+/** The rebound with how it ended and what it cost. */
+export interface CushionImpact {
+  readonly state: CushionStateOut;
+  readonly outcome: CushionOutcome;
+  /** Integration steps taken, accepted and rejected. */
+  readonly steps: number;
+  readonly rejectedSteps: number;
+}
+
+// One solver reused by every call (JavaScript runs one call at a time; nothing is allocated
+// per step).
+const solver = new CushionSolver();
+
+function run(state: CushionState, params: CushionParams, options: CushionOptions | undefined): CushionImpact {
+  validateState(state);
+  validateParams(params);
+  const tol = resolveTolerance(options);
+  if (!(state.vy > 0)) {
+    return {
+      state: { vx: state.vx, vy: state.vy, wx: state.wx, wy: state.wy, wz: state.wz },
+      outcome: 'no-impact',
+      steps: 0,
+      rejectedSteps: 0,
+    };
+  }
+  solver.solve(
+    state.vx, state.vy, state.wx, state.wy, state.wz,
+    params.M, params.R, params.h, params.ee, params.muS, params.muW, tol,
+  );
+  return { state: solver.result(), outcome: solver.outcome, steps: solver.steps, rejectedSteps: solver.rejected };
+}
+
+/**
+ * The ball's velocity and spin after it strikes a cushion, in the cushion frame (x along the
+ * cushion, y into it, z up). `vy <= 0` is no impact: a copy of the state is returned.
+ * Throws a RangeError naming the field for non-finite input, M or R <= 0, h outside (R, 2R),
+ * e_e outside [0, 1], negative friction or a bad tolerance.
+ */
+export function cushionRebound(state: CushionState, params: CushionParams, options?: CushionOptions): CushionStateOut {
+  return run(state, params, options).state;
+}
+
+/** cushionRebound with its outcome and step counts. */
+export function cushionImpact(state: CushionState, params: CushionParams, options?: CushionOptions): CushionImpact {
+  return run(state, params, options);
+}
+
+/**
+ * cushionImpact with the impact's history sampled along the impulse (8 points per step, on the
+ * integrator's continuous extension): for figures and checks, not for the simulation.
+ */
+export function cushionTrace(
+  state: CushionState,
+  params: CushionParams,
+  options?: CushionOptions,
+): CushionImpact & { readonly trace: readonly CushionTracePoint[] } {
+  const trace: CushionTracePoint[] = [];
+  solver.trace = trace;
+  try {
+    return { ...run(state, params, options), trace };
+  } finally {
+    solver.trace = null;
+  }
+}
