@@ -1,6 +1,7 @@
 // Checks a scene and a shot before anything is simulated: every problem is a clear error that
 // names it, and nothing has been computed when it is thrown.
 import type { Scene, Shot, SimOptions } from './sim-types.ts';
+import { CUSHION_TOLERANCES } from './cushion-types.ts';
 import { MISCUE_LIMIT, MiscueError } from './strike.ts';
 import { tableSpec, type TableSpec } from './tables.ts';
 
@@ -81,5 +82,11 @@ export function validateOptions(options: SimOptions | undefined): { rootToleranc
   if (typeof rootTolerance !== 'number' || !(rootTolerance >= 1e-15 && rootTolerance <= 1e-3)) {
     fail(`options.rootTolerance must be in [1e-15, 1e-3] s, got ${String(rootTolerance)}`);
   }
-  return { rootTolerance, cushionTolerance: options?.cushionTolerance ?? 'balanced' };
+  const cushionTolerance = options?.cushionTolerance ?? 'balanced';
+  const named = typeof cushionTolerance === 'string' && Object.prototype.hasOwnProperty.call(CUSHION_TOLERANCES, cushionTolerance);
+  const numeric = typeof cushionTolerance === 'number' && cushionTolerance >= 1e-12 && cushionTolerance <= 1e-2;
+  if (!named && !numeric) {
+    fail(`options.cushionTolerance must be one of ${Object.keys(CUSHION_TOLERANCES).join(', ')} or a number in [1e-12, 1e-2], got ${String(cushionTolerance)}`);
+  }
+  return { rootTolerance, cushionTolerance };
 }

@@ -98,7 +98,7 @@ add('pool 30° bank with right english', ['bank', 'single', 'spin'], POOL, [{ id
 add('snooker up and down the table', ['bank', 'single'], SNOOKER, [{ id: 'cue', x: -1.2, y: 0.1 }], shot('cue', 0.02, 4, 0, 0.2));
 add('carom long diagonal with side', ['bank', 'single', 'carom'], CAROM, [{ id: 'white', x: -1.2, y: -0.5 }], shot('white', 0.45, 4, 0.3, 0));
 add('grazing incidence on a rail (0.3°)', ['bank', 'single', 'hard'], POOL, [{ id: 'cue', x: -0.9, y: 0.55 }], shot('cue', 0.005235987755982988, 3));
-add('very slow into a cushion (0.05 m/s)', ['bank', 'single', 'hard'], POOL, [{ id: 'cue', x: 0.2, y: 0.595 }], shot('cue', Math.PI / 2, 0.05));
+add('very slow into a cushion (0.05 m/s)', ['bank', 'single', 'hard'], POOL, [{ id: 'cue', x: 0.2, y: 0.6044 }], shot('cue', Math.PI / 2, 0.05));
 add('frozen to a rail, struck along it', ['bank', 'single', 'hard'], POOL, [{ id: 'cue', ...onRail(POOL, 'top', -0.9) }], shot('cue', 0, 2, 0, 0.2));
 add('frozen to a rail, struck into it', ['bank', 'single', 'hard'], POOL, [{ id: 'cue', ...onRail(POOL, 'bottom', 0.4) }], shot('cue', -Math.PI / 3, 1.5));
 add('carom straight into a corner (two cushions at once)', ['bank', 'single', 'hard'], CAROM, [{ id: 'white', x: 0.5, y: -0.2 }], shot('white', aim({ x: 0.5, y: -0.2 }, { x: 1.38925, y: 0.67925 }), 3));
@@ -124,7 +124,7 @@ add('spin in place (very slow with side)', ['spin', 'single', 'hard'], POOL, [{ 
 add('pot into the top-right corner', ['pocket', 'single'], POOL, [{ id: 'cue', x: 0.6, y: -0.3 }], shot('cue', aim({ x: 0.6, y: -0.3 }, { x: 1.3, y: -0.665 }), 2));
 add('pot into a middle pocket', ['pocket', 'single'], POOL, [{ id: 'cue', x: 0, y: 0 }], shot('cue', Math.PI / 2, 1.5));
 add('rattle in a corner jaw', ['pocket', 'single', 'hard'], POOL, [{ id: 'cue', x: 0.6, y: 0.4 }], shot('cue', aim({ x: 0.6, y: 0.4 }, { x: 1.2, y: 0.65 }), 2.5));
-add('middle pocket jaw at an angle', ['pocket', 'single', 'hard'], POOL, [{ id: 'cue', x: -0.5, y: 0.2 }], shot('cue', aim({ x: -0.5, y: 0.2 }, { x: -0.07, y: 0.66 }), 2));
+add('middle pocket jaw at an angle', ['pocket', 'single', 'hard'], POOL, [{ id: 'cue', x: -0.5, y: 0.2 }], shot('cue', aim({ x: -0.5, y: 0.2 }, { x: 0.06, y: 0.62 }), 2));
 add('scratch: cue ball into a corner after the object ball', ['pocket'], POOL, [{ id: 'cue', x: 0.5, y: 0.1 }, { id: '8', x: 0.8, y: 0.25 }], shot('cue', aim({ x: 0.5, y: 0.1 }, { x: 0.8, y: 0.25 }), 3, 0, 0.4));
 {
   const black = { x: 1.2, y: 0.5 };
@@ -132,7 +132,7 @@ add('scratch: cue ball into a corner after the object ball', ['pocket'], POOL, [
   const cue = { x: 0.6, y: 0.3 };
   add('snooker black into the corner', ['pocket'], SNOOKER, [{ id: 'cue', ...cue }, { id: 'black', ...black }], shot('cue', aim(cue, g), 2.5));
 }
-add('snooker corner jaw rattle', ['pocket', 'single', 'hard'], SNOOKER, [{ id: 'cue', x: 1.2, y: 0.3 }], shot('cue', aim({ x: 1.2, y: 0.3 }, { x: 1.75, y: 0.86 }), 3));
+add('snooker corner jaw rattle', ['pocket', 'single', 'hard'], SNOOKER, [{ id: 'cue', x: 1.2, y: 0.3 }], shot('cue', aim({ x: 1.2, y: 0.3 }, { x: 1.76, y: 0.83 }), 3));
 add('snooker middle pocket', ['pocket', 'single'], SNOOKER, [{ id: 'cue', x: 0.02, y: -0.3 }], shot('cue', -Math.PI / 2, 2));
 
 // Hard cases (../shared/physics.md).
