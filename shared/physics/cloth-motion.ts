@@ -58,11 +58,11 @@ export function spinZAfter(wz: number, dt: number, p: ClothParams): number {
 }
 
 /**
- * A ball left by an event with both its speed and its slip below this (m/s) stops there: it would
- * move less than v²/(2 μ_r g) = 5e-10 m further. Without it, clusters of touching balls nudged at
- * micrometres per second trade thousands of ever smaller impacts (inelastic collapse).
+ * A ball left by an event with both its speed and its slip below this (m/s) stops there: rolling,
+ * it would go at most v²/(2 μ_r g) = 5 µm further. Without it, clusters of touching balls nudged
+ * at a crawl trade thousands of ever smaller impacts (inelastic collapse) for nothing visible.
  */
-export const SETTLE_SPEED = 1e-5;
+export const SETTLE_SPEED = 1e-3;
 
 /** The motion a ball is in, judged from its velocity and spin. */
 export function classify(s: BallSample, p: ClothParams): Motion {

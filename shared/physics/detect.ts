@@ -16,7 +16,7 @@ export interface Path {
 }
 
 /** Relative normal speed below which touching bodies count as neither approaching nor parting (m/s). */
-export const CONTACT_SPEED = 1e-9;
+export const CONTACT_SPEED = 1e-6;
 /** Relative normal acceleration below which touching bodies count as not pressed together (m/s^2). */
 export const CONTACT_ACCEL = 1e-9;
 /** Overlap that touching bodies may reach, through rounding, before it counts as a new contact (m). */

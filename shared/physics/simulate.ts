@@ -58,6 +58,8 @@ class Simulation {
   readonly cushionParams: CushionParams;
   readonly elasticParams: BallBallParams;
   private readonly lastImpact: number[];
+  /** When each ball was last in a pressed contact (see onBall). */
+  private readonly lastPress: number[];
   /** Pressed pairs stopped along their line of centres while moving faster than PRESS_SPEED. */
   fastPresses = 0;
   readonly R: number;
@@ -82,6 +84,7 @@ class Simulation {
     this.ballParams = { R: this.R, ...table.ballBall };
     this.elasticParams = { ...this.ballParams, restitution: 1 };
     this.lastImpact = scene.balls.map(() => -Infinity);
+    this.lastPress = scene.balls.map(() => -Infinity);
     this.cushionParams = {
       M: table.ballMass,
       R: this.R,
@@ -296,6 +299,15 @@ class Simulation {
     this.settleContact(sa, sb, nx0 / d, ny0 / d);
     this.rollTogether(sa, sb, nx0 / d, ny0 / d);
     this.stopPressing(sa, sb, nx0 / d, ny0 / d);
+    if (!(speed > CONTACT_SPEED)) {
+      // A pressed contact again at the same instant: the ball is wedged in a cluster whose pair
+      // locks undo each other (a ball pressed from two sides). Both stop; only energy is lost.
+      if (this.lastPress[a.index] === t || this.lastPress[b.index] === t) {
+        for (const s of [sa, sb]) s.vx = s.vy = s.wx = s.wy = 0;
+      }
+      this.lastPress[a.index] = t;
+      this.lastPress[b.index] = t;
+    }
     this.restart(a, t, sa);
     this.restart(b, t, sb);
     this.events.push({ t, kind: 'ball', balls: [a.id, b.id], speed });

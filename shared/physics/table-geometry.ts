@@ -48,6 +48,12 @@ export interface Pocket {
   readonly x: number;
   readonly y: number;
   readonly r: number;
+  /**
+   * Where a ball's centre may be in the pocket's mouth, outside the rectangle the rails leave it:
+   * a quadrilateral from the two jaw noses' virtual corners, moved a ball radius onto the table,
+   * to the two ends of the jaw faces (x0, y0, x1, y1, ...).
+   */
+  readonly mouth: readonly number[];
 }
 
 /** One pocket's shape: mouth width between the jaw noses, jaw angle, nose radius, face length. */
@@ -92,7 +98,7 @@ function point(x: number, y: number, name: string): Arc {
  * The jaw at one side of a pocket: the rounded nose and the face. Returns the cushions and the end
  * of the face (where the drop circle begins) and the point where the rail stops.
  */
-function buildJaw(j: Jaw, shape: PocketShape, name: string): { cushions: Cushion[]; railEnd: [number, number]; faceEnd: [number, number] } {
+function buildJaw(j: Jaw, shape: PocketShape, name: string): { cushions: Cushion[]; railEnd: [number, number]; faceEnd: [number, number]; corner: [number, number] } {
   // Face direction: the rail direction (away from the pocket) turned by the jaw angle into the
   // cushion: d = cos β r + sin β n.
   const dx = shape.cosJaw * j.rx + shape.sinJaw * j.nx;
@@ -132,14 +138,18 @@ function buildJaw(j: Jaw, shape: PocketShape, name: string): { cushions: Cushion
   else cushions.push(point(j.px, j.py, `${name}-nose`));
   cushions.push(segment(t2x, t2y, ex, ey, fnx, fny, `${name}-face`));
   cushions.push(point(ex, ey, `${name}-end`));
-  return { cushions, railEnd: [t1x, t1y], faceEnd: [ex, ey] };
+  return { cushions, railEnd: [t1x, t1y], faceEnd: [ex, ey], corner: [j.px, j.py] };
+}
+
+function onTable(corner: [number, number], j: Jaw, R: number): [number, number] {
+  return [corner[0] - R * j.nx, corner[1] - R * j.ny];
 }
 
 /**
  * The outline of a rectangular table of playing area length x width with six pockets (corner and
  * middle shapes given) or none.
  */
-export function buildOutline(length: number, width: number, corner?: PocketShape, middle?: PocketShape): TableOutline {
+export function buildOutline(length: number, width: number, R: number, corner?: PocketShape, middle?: PocketShape): TableOutline {
   const hx = length / 2;
   const hy = width / 2;
   if (!corner || !middle) {
@@ -160,7 +170,7 @@ export function buildOutline(length: number, width: number, corner?: PocketShape
   // Rail end points, collected per rail in order along it, then joined into segments.
   const longRail: Record<number, number[]> = { 1: [], [-1]: [] }; // x coordinates where the rail at y = sy·hy stops
   const shortRail: Record<number, number[]> = { 1: [], [-1]: [] };
-  const drop = (id: string, a: [number, number], b: [number, number]) => {
+  const drop = (id: string, a: [number, number], b: [number, number], ca: [number, number], cb: [number, number]) => {
     const dx = b[0] - a[0];
     const dy = b[1] - a[1];
     const r = 0.5 * Math.sqrt(dx * dx + dy * dy);
@@ -175,27 +185,31 @@ export function buildOutline(length: number, width: number, corner?: PocketShape
       ox = -ox;
       oy = -oy;
     }
-    pockets.push({ id, x: mx + 0.5 * r * ox, y: my + 0.5 * r * oy, r });
+    pockets.push({ id, x: mx + 0.5 * r * ox, y: my + 0.5 * r * oy, r, mouth: [ca[0], ca[1], a[0], a[1], b[0], b[1], cb[0], cb[1]] });
   };
   // Pocket ids as the referees name them (shared/rules/pockets.ts): B/M/T along x, L = +y, R = -y.
   for (const sx of [-1, 1]) {
     for (const sy of [1, -1]) {
       const id = `${sx < 0 ? 'B' : 'T'}${sy > 0 ? 'L' : 'R'}`;
-      const onLong = buildJaw({ px: sx * (hx - d), py: sy * hy, rx: -sx, ry: 0, nx: 0, ny: sy }, corner, `${id}-long`);
-      const onShort = buildJaw({ px: sx * hx, py: sy * (hy - d), rx: 0, ry: -sy, nx: sx, ny: 0 }, corner, `${id}-short`);
+      const longJaw: Jaw = { px: sx * (hx - d), py: sy * hy, rx: -sx, ry: 0, nx: 0, ny: sy };
+      const shortJaw: Jaw = { px: sx * hx, py: sy * (hy - d), rx: 0, ry: -sy, nx: sx, ny: 0 };
+      const onLong = buildJaw(longJaw, corner, `${id}-long`);
+      const onShort = buildJaw(shortJaw, corner, `${id}-short`);
       cushions.push(...onLong.cushions, ...onShort.cushions);
       longRail[sy]!.push(onLong.railEnd[0]);
       shortRail[sx]!.push(onShort.railEnd[1]);
-      drop(id, onLong.faceEnd, onShort.faceEnd);
+      drop(id, onLong.faceEnd, onShort.faceEnd, onTable(onLong.corner, longJaw, R), onTable(onShort.corner, shortJaw, R));
     }
   }
   for (const sy of [1, -1]) {
     const id = `M${sy > 0 ? 'L' : 'R'}`;
-    const right = buildJaw({ px: m, py: sy * hy, rx: 1, ry: 0, nx: 0, ny: sy }, middle, `${id}-right`);
-    const left = buildJaw({ px: -m, py: sy * hy, rx: -1, ry: 0, nx: 0, ny: sy }, middle, `${id}-left`);
+    const rightJaw: Jaw = { px: m, py: sy * hy, rx: 1, ry: 0, nx: 0, ny: sy };
+    const leftJaw: Jaw = { px: -m, py: sy * hy, rx: -1, ry: 0, nx: 0, ny: sy };
+    const right = buildJaw(rightJaw, middle, `${id}-right`);
+    const left = buildJaw(leftJaw, middle, `${id}-left`);
     cushions.push(...right.cushions, ...left.cushions);
     longRail[sy]!.push(right.railEnd[0], left.railEnd[0]);
-    drop(id, right.faceEnd, left.faceEnd);
+    drop(id, right.faceEnd, left.faceEnd, onTable(right.corner, rightJaw, R), onTable(left.corner, leftJaw, R));
   }
   for (const sy of [1, -1]) {
     const xs = longRail[sy]!.slice().sort((a, b) => a - b); // [-corner, -middle, +middle, +corner]
@@ -208,4 +222,41 @@ export function buildOutline(length: number, width: number, corner?: PocketShape
     cushions.push(segment(sx * hx, ys[0]!, sx * hx, ys[1]!, sx, 0, sx < 0 ? 'left-short' : 'right-short'));
   }
   return { cushions, pockets };
+}
+
+/** Whether (x, y) lies inside the convex polygon of flat coordinates (either winding). */
+export function inConvexPolygon(poly: readonly number[], x: number, y: number): boolean {
+  let sign = 0;
+  const n = poly.length / 2;
+  for (let i = 0; i < n; i++) {
+    const ax = poly[2 * i]!;
+    const ay = poly[2 * i + 1]!;
+    const bx = poly[(2 * i + 2) % poly.length]!;
+    const by = poly[(2 * i + 3) % poly.length]!;
+    const cross = (bx - ax) * (y - ay) - (by - ay) * (x - ax);
+    if (cross === 0) continue;
+    const s = cross > 0 ? 1 : -1;
+    if (sign === 0) sign = s;
+    else if (s !== sign) return false;
+  }
+  return true;
+}
+
+/** The cushion a ball of radius R at (x, y) sinks into by more than tol, if any. */
+export function penetratedCushion(cushions: readonly Cushion[], x: number, y: number, R: number, tol: number): Cushion | undefined {
+  for (const c of cushions) {
+    if (c.kind === 'segment') {
+      const ex = c.bx - c.ax;
+      const ey = c.by - c.ay;
+      const along = ((x - c.ax) * ex + (y - c.ay) * ey) / (ex * ex + ey * ey);
+      const gap = -(c.nx * (x - c.ax) + c.ny * (y - c.ay)) - R;
+      if (along >= 0 && along <= 1 && gap < -tol && gap > -2 * R) return c;
+    } else {
+      const dx = x - c.cx;
+      const dy = y - c.cy;
+      const inSpan = c.full || (c.ux * dy - c.uy * dx >= 0 && dx * c.wy - dy * c.wx >= 0);
+      if (inSpan && dx * dx + dy * dy < (R + c.r - tol) * (R + c.r - tol)) return c;
+    }
+  }
+  return undefined;
 }

@@ -73,7 +73,7 @@ function table(
   corner?: PocketShape,
   middle?: PocketShape,
 ): TableSpec {
-  const outline = buildOutline(base.length, base.width, corner, middle);
+  const outline = buildOutline(base.length, base.width, base.ballRadius, corner, middle);
   return Object.freeze({ ...base, cushionHeight: base.cushion.height, pockets: outline.pockets, cushions: outline.cushions });
 }
 

@@ -3,6 +3,7 @@
 import type { Scene, Shot, SimOptions } from './sim-types.ts';
 import { CUSHION_TOLERANCES } from './cushion-types.ts';
 import { MISCUE_LIMIT, MiscueError } from './strike.ts';
+import { inConvexPolygon, penetratedCushion } from './table-geometry.ts';
 import { tableSpec, type TableSpec } from './tables.ts';
 
 /** Overlap between balls, or between a ball and a cushion, tolerated as touching (m). */
@@ -47,9 +48,14 @@ export function validateScene(scene: Scene): TableSpec {
     seen.add(b.id);
     const x = finite(b.x, `ball "${b.id}" x`);
     const y = finite(b.y, `ball "${b.id}" y`);
-    if (Math.abs(x) > hx || Math.abs(y) > hy) {
-      fail(`ball "${b.id}" at (${x}, ${y}) is off the table: its centre must lie within ${table.length / 2 - R} of the centre along x and ${table.width / 2 - R} along y`);
+    const inMouth = table.pockets.find((p) => inConvexPolygon(p.mouth, x, y));
+    if ((Math.abs(x) > hx || Math.abs(y) > hy) && !inMouth) {
+      fail(`ball "${b.id}" at (${x}, ${y}) is off the table: its centre must lie within ${table.length / 2 - R} of the centre along x and ${table.width / 2 - R} along y, or in a pocket's mouth`);
     }
+    const over = table.pockets.find((p) => (x - p.x) * (x - p.x) + (y - p.y) * (y - p.y) < p.r * p.r);
+    if (over) fail(`ball "${b.id}" at (${x}, ${y}) is over pocket ${over.id}: it would drop`);
+    const into = penetratedCushion(table.cushions, x, y, R, CONTACT_TOLERANCE);
+    if (into) fail(`ball "${b.id}" at (${x}, ${y}) is off the table: it sinks into the cushion ${into.name}`);
   });
   const limit = 2 * R - CONTACT_TOLERANCE;
   for (let i = 0; i < balls.length; i++) {

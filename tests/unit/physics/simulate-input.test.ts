@@ -5,7 +5,7 @@ const R = tableSpec('pool-9ft').ballRadius;
 const scene: Scene = { table: 'pool-9ft', balls: [{ id: 'cue', x: -0.5, y: 0 }, { id: '1', x: 0.3, y: 0.1 }] };
 const shot: Shot = { ball: 'cue', heading: 0.1, speed: 2, side: 0, top: 0 };
 
-function rejects(s: Scene, sh: Shot, message: RegExp, type: typeof RangeError = SimulationInputError): void {
+function rejects(s: Scene, sh: Shot, message: RegExp, type: new (...args: never[]) => Error = SimulationInputError): void {
   const before = JSON.stringify([s, sh]);
   expect(() => simulate(s, sh)).toThrow(type);
   expect(() => simulate(s, sh)).toThrow(message);
