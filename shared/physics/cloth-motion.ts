@@ -94,8 +94,11 @@ export function motionDuration(b: BallState, p: ClothParams): number {
   }
 }
 
+/** What sampling a segment reads: its motion, its start state and its constant acceleration. */
+export type SegmentState = Pick<BallState, 'motion' | 'x' | 'y' | 'vx' | 'vy' | 'wx' | 'wy' | 'wz' | 'ax' | 'ay'>;
+
 /** The ball's state dt after t0 within its current segment (dt <= tEnd - t0). */
-export function sampleAt(b: BallState, dt: number, p: ClothParams, out: BallSample): BallSample {
+export function sampleAt(b: SegmentState, dt: number, p: ClothParams, out: BallSample): BallSample {
   const ax = b.ax;
   const ay = b.ay;
   out.x = b.x + (b.vx + 0.5 * ax * dt) * dt;

@@ -1,7 +1,7 @@
 // Sampling an outcome at any time, for animation: each ball's path is a list of closed-form
 // segments, and the state at t comes from the last segment that starts at or before t.
 import type { BallSample, Motion } from './ball-state.ts';
-import { spinZAfter, specificEnergy, type ClothParams } from './cloth-motion.ts';
+import { emptySample, sampleAt, specificEnergy, type ClothParams } from './cloth-motion.ts';
 import type { Outcome, PathSegment } from './sim-types.ts';
 import { tableSpec } from './tables.ts';
 
@@ -27,26 +27,12 @@ function segmentAt(segments: readonly PathSegment[], t: number): PathSegment {
   return segments[lo]!;
 }
 
-function evaluate(s: PathSegment, t: number, p: ClothParams): BallSample {
-  const dt = Math.max(0, t - s.t0);
-  if (s.motion === 'rest' || s.motion === 'pocketed') return { x: s.x, y: s.y, vx: 0, vy: 0, wx: 0, wy: 0, wz: 0 };
-  const wz = spinZAfter(s.wz, dt, p);
-  if (s.motion === 'spinning') return { x: s.x, y: s.y, vx: 0, vy: 0, wx: 0, wy: 0, wz };
-  const vx = s.vx + s.ax * dt;
-  const vy = s.vy + s.ay * dt;
-  const x = s.x + (s.vx + 0.5 * s.ax * dt) * dt;
-  const y = s.y + (s.vy + 0.5 * s.ay * dt) * dt;
-  if (s.motion === 'rolling') return { x, y, vx, vy, wx: -vy / p.R, wy: vx / p.R, wz };
-  const k = 5 / (2 * p.R);
-  return { x, y, vx, vy, wx: s.wx + k * s.ay * dt, wy: s.wy - k * s.ax * dt, wz };
-}
-
 /** Every ball's position, velocity and spin at time t (s) of the outcome. */
 export function sampleOutcome(outcome: Outcome, t: number): BallAtTime[] {
   const p = clothParams(outcome.table);
   return outcome.paths.map((path) => {
     const s = segmentAt(path.segments, t);
-    return { id: path.id, motion: s.t0 <= t ? s.motion : 'rest', ...evaluate(s, t, p) };
+    return { id: path.id, motion: s.t0 <= t ? s.motion : 'rest', ...sampleAt(s, Math.max(0, t - s.t0), p, emptySample()) };
   });
 }
 

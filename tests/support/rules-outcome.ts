@@ -1,6 +1,7 @@
 // Synthetic outcomes for the referee tests: a small builder that writes the events a simulation
 // would report (ball contacts, cushions, pockets) in time order, and the final positions.
-import { cueBallId } from '../../shared/rules/index.ts';
+import { expect } from 'vitest';
+import { cueBallId, RuleError } from '../../shared/rules/index.ts';
 import type { Ball, Game, Outcome, OutcomeEvent, PocketId, Shot } from '../../shared/rules/index.ts';
 
 export class OutcomeBuilder {
@@ -95,4 +96,16 @@ export function deepFreeze<T>(value: T): T {
     Object.freeze(value);
   }
   return value;
+}
+
+/** Asserts that fn throws a RuleError with the given code. */
+export function expectRuleError(fn: () => unknown, code: string): void {
+  try {
+    fn();
+  } catch (e) {
+    expect(e).toBeInstanceOf(RuleError);
+    expect((e as RuleError).code).toBe(code);
+    return;
+  }
+  throw new Error(`expected a RuleError ${code}`);
 }

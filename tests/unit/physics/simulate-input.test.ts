@@ -24,7 +24,11 @@ describe('simulate rejects bad input before simulating anything', () => {
 
   it('names a ball off the table', () => {
     rejects({ table: 'pool-9ft', balls: [{ id: 'cue', x: 1.27, y: 0 }] }, shot, /ball "cue" at \(1\.27, 0\) is off the table/);
-    rejects({ table: 'pool-9ft', balls: [{ id: 'cue', x: 0, y: 0.635 - R + 1e-6 }] }, shot, /off the table/);
+    rejects({ table: 'pool-9ft', balls: [{ id: 'cue', x: 0.5, y: 0.635 - R + 1e-6 }] }, shot, /off the table/);
+    // In a pocket's mouth, beyond the rail line, a ball may rest; over the drop circle it may not.
+    expect(() => simulate({ table: 'pool-9ft', balls: [{ id: 'cue', x: 0, y: 0.62 }] }, shot)).not.toThrow();
+    rejects({ table: 'pool-9ft', balls: [{ id: 'cue', x: 0, y: 0.66 }] }, shot, /over pocket ML: it would drop/);
+    rejects({ table: 'pool-9ft', balls: [{ id: 'cue', x: 0.07, y: 0.64 }] }, shot, /off the table/);
   });
 
   it('rejects duplicate ids, unknown balls and tables, empty scenes', () => {

@@ -11,7 +11,7 @@ import {
   type Ball,
   type EightBallGame,
 } from '../../../shared/rules/index.ts';
-import { deepFreeze, outcome, shotFor, withState } from '../../support/rules-outcome.ts';
+import { deepFreeze, outcome, shotFor, withState, expectRuleError } from '../../support/rules-outcome.ts';
 
 const spec = tableSpec('pool-9ft');
 const R = spec.ballRadius;
@@ -42,16 +42,6 @@ const onEight: Ball[] = [
   { id: '8', x: 0.8, y: 0.1 },
 ];
 
-function expectRuleError(fn: () => unknown, code: string): void {
-  try {
-    fn();
-  } catch (e) {
-    expect(e).toBeInstanceOf(RuleError);
-    expect((e as RuleError).code).toBe(code);
-    return;
-  }
-  throw new Error(`expected a RuleError ${code}`);
-}
 
 describe('eight-ball rack (WPA 3.2)', () => {
   it('racks a triangle: apex on the foot spot, 8 in the middle, a solid and a stripe on the back corners', () => {

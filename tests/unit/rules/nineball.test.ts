@@ -10,7 +10,7 @@ import {
   type Game,
   type NineBallGame,
 } from '../../../shared/rules/index.ts';
-import { deepFreeze, outcome, shotFor, withState } from '../../support/rules-outcome.ts';
+import { deepFreeze, outcome, shotFor, withState, expectRuleError } from '../../support/rules-outcome.ts';
 
 const spec = tableSpec('pool-9ft');
 const R = spec.ballRadius;
@@ -33,16 +33,6 @@ const open: Ball[] = [
   { id: '9', x: 0.8, y: 0.1 },
 ];
 
-function expectRuleError(fn: () => unknown, code: string): void {
-  try {
-    fn();
-  } catch (e) {
-    expect(e).toBeInstanceOf(RuleError);
-    expect((e as RuleError).code).toBe(code);
-    return;
-  }
-  throw new Error(`expected a RuleError ${code}`);
-}
 
 describe('nine-ball rack (WPA 2.2)', () => {
   it('racks a diamond with the 1 on the foot spot and the 9 in the middle, cue ball in the kitchen', () => {

@@ -19,7 +19,7 @@ import {
   type Shot,
   type Outcome,
 } from '../../../shared/rules/index.ts';
-import { deepFreeze, outcome, shotFor } from '../../support/rules-outcome.ts';
+import { deepFreeze, outcome, shotFor, expectRuleError } from '../../support/rules-outcome.ts';
 
 const pool = tableSpec('pool-9ft');
 const R = pool.ballRadius;
@@ -28,16 +28,6 @@ function practice(options = {}): PracticeGame {
   return newGame('practice', ['pat'], { seed: 4, ...options }) as PracticeGame;
 }
 
-function expectRuleError(fn: () => unknown, code: string): void {
-  try {
-    fn();
-  } catch (e) {
-    expect(e).toBeInstanceOf(RuleError);
-    expect((e as RuleError).code).toBe(code);
-    return;
-  }
-  throw new Error(`expected a RuleError ${code}`);
-}
 
 const layout = [
   { id: 'cue', x: -0.5, y: 0 },

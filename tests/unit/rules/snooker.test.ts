@@ -12,7 +12,7 @@ import {
   type Ball,
   type SnookerGame,
 } from '../../../shared/rules/index.ts';
-import { deepFreeze, outcome, shotFor, withState } from '../../support/rules-outcome.ts';
+import { deepFreeze, outcome, shotFor, withState, expectRuleError } from '../../support/rules-outcome.ts';
 
 const spec = tableSpec('snooker-12ft');
 const R = spec.ballRadius;
@@ -34,16 +34,6 @@ function reds2(): Ball[] {
   return [{ id: 'cue', x: -0.8, y: 0.3 }, { id: 'red1', x: 0.4, y: 0.5 }, { id: 'red2', x: 0.6, y: -0.5 }, ...colours()];
 }
 
-function expectRuleError(fn: () => unknown, code: string): void {
-  try {
-    fn();
-  } catch (e) {
-    expect(e).toBeInstanceOf(RuleError);
-    expect((e as RuleError).code).toBe(code);
-    return;
-  }
-  throw new Error(`expected a RuleError ${code}`);
-}
 
 describe('snooker set-up (WPBSA S1 R1, S3 Position of Balls)', () => {
   it('puts the colours on their spots and the reds in a triangle behind the pink', () => {

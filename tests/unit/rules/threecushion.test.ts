@@ -10,7 +10,7 @@ import {
   type Game,
   type ThreeCushionGame,
 } from '../../../shared/rules/index.ts';
-import { deepFreeze, outcome, shotFor, withState } from '../../support/rules-outcome.ts';
+import { deepFreeze, outcome, shotFor, withState, expectRuleError } from '../../support/rules-outcome.ts';
 
 const spec = tableSpec('carom-match');
 
@@ -23,16 +23,6 @@ function midGame(patch: Partial<ThreeCushionGame> = {}): ThreeCushionGame {
   return withState(carom(), { shots: 4, ...patch });
 }
 
-function expectRuleError(fn: () => unknown, code: string): void {
-  try {
-    fn();
-  } catch (e) {
-    expect(e).toBeInstanceOf(RuleError);
-    expect((e as RuleError).code).toBe(code);
-    return;
-  }
-  throw new Error(`expected a RuleError ${code}`);
-}
 
 const point = (g: Game, cue = cueBallId(g), other = cue === 'white' ? 'yellow' : 'white') =>
   applyShot(g, shotFor(g), outcome(g).hit(cue, 'red').cushion(cue, 3).hit(cue, other).build());
