@@ -30,27 +30,28 @@ export const CONTACT_OVERLAP = 1e-10;
  * contact is when they close by CONTACT_OVERLAP more than they are now, so rounding can neither
  * hide a contact nor repeat one at the same instant.
  */
-export function nextContact(c: readonly number[], H: number, tol: number, scale: number): number {
+export function nextContact(c: Float64Array, H: number, tol: number, scale: number): number {
   if (c[0]! > 0) return firstEntry(c, 0, H, tol);
   const slope = c[1] ?? 0;
   const slopeEps = scale * CONTACT_SPEED;
   if (slope < -slopeEps) return 0;
   if (slope <= slopeEps && (c[2] ?? 0) < -0.5 * scale * CONTACT_ACCEL) return 0;
   // Measured from the present (possibly slightly overlapping) distance.
-  const shifted = c.slice();
-  shifted[0] = scale * CONTACT_OVERLAP;
-  return firstEntry(shifted, 0, H, tol);
+  c[0] = scale * CONTACT_OVERLAP;
+  return firstEntry(c, 0, H, tol);
 }
 
-/** Squared distance between centres minus dist^2, as a quartic in τ. */
-function distanceQuartic(dx: number, dy: number, dvx: number, dvy: number, dax: number, day: number, dist: number): number[] {
-  return [
-    dx * dx + dy * dy - dist * dist,
-    2 * (dx * dvx + dy * dvy),
-    dvx * dvx + dvy * dvy + dx * dax + dy * day,
-    dvx * dax + dvy * day,
-    0.25 * (dax * dax + day * day),
-  ];
+// The gap polynomial of the current prediction (no allocation per prediction).
+const POLY = new Float64Array(5);
+
+/** Squared distance between centres minus dist^2, as a quartic in τ, into POLY. */
+function distanceQuartic(dx: number, dy: number, dvx: number, dvy: number, dax: number, day: number, dist: number): Float64Array {
+  POLY[0] = dx * dx + dy * dy - dist * dist;
+  POLY[1] = 2 * (dx * dvx + dy * dvy);
+  POLY[2] = dvx * dvx + dvy * dvy + dx * dax + dy * day;
+  POLY[3] = dvx * dax + dvy * day;
+  POLY[4] = 0.25 * (dax * dax + day * day);
+  return POLY;
 }
 
 /** Two balls of radius R meet when their centres are 2R apart. */
@@ -62,7 +63,12 @@ export function ballBallTime(a: Path, b: Path, R: number, H: number, tol: number
 /** A ball meets a straight cushion when its centre is R from the nose line, within the segment. */
 export function segmentTime(p: Path, s: Segment, R: number, H: number, tol: number): number {
   // gap = -(n · (p - A)) - R, positive on the table side.
-  const c = [-(s.nx * (p.x - s.ax) + s.ny * (p.y - s.ay)) - R, -(s.nx * p.vx + s.ny * p.vy), -0.5 * (s.nx * p.ax + s.ny * p.ay)];
+  const c = POLY;
+  c[0] = -(s.nx * (p.x - s.ax) + s.ny * (p.y - s.ay)) - R;
+  c[1] = -(s.nx * p.vx + s.ny * p.vy);
+  c[2] = -0.5 * (s.nx * p.ax + s.ny * p.ay);
+  c[3] = 0;
+  c[4] = 0;
   const t = nextContact(c, H, tol, 1);
   if (t === Infinity) return t;
   const x = p.x + (p.vx + 0.5 * p.ax * t) * t;

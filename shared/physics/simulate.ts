@@ -66,8 +66,10 @@ class Simulation {
   private readonly sa: BallSample = emptySample();
   private readonly sb: BallSample = emptySample();
   private readonly scratch: BallSample = emptySample();
-  private readonly pathA: Path = { x: 0, y: 0, vx: 0, vy: 0, ax: 0, ay: 0 };
-  private readonly pathB: Path = { x: 0, y: 0, vx: 0, vy: 0, ax: 0, ay: 0 };
+  /** Each ball's path as seen from the time and segment it was last computed for (see pathOf). */
+  private readonly paths: Path[];
+  private readonly pathTime: number[];
+  private readonly pathVersion: number[];
   private readonly boxA = new Float64Array(4);
   private readonly boxB = new Float64Array(4);
   private readonly cushionBoxes: Float64Array[];
@@ -112,6 +114,9 @@ class Simulation {
       pocket: undefined,
     }));
     this.segments = this.balls.map(() => []);
+    this.paths = this.balls.map(() => ({ x: 0, y: 0, vx: 0, vy: 0, ax: 0, ay: 0 }));
+    this.pathTime = this.balls.map(() => Number.NaN);
+    this.pathVersion = this.balls.map(() => -1);
     this.cushionBoxes = table.cushions.map((c) => {
       if (c.kind === 'segment') return new Float64Array([Math.min(c.ax, c.bx), Math.min(c.ay, c.by), Math.max(c.ax, c.bx), Math.max(c.ay, c.by)]);
       return new Float64Array([c.cx - c.r, c.cy - c.r, c.cx + c.r, c.cy + c.r]);
@@ -129,7 +134,12 @@ class Simulation {
     this.record(b);
   }
 
-  private pathAt(b: BallState, t: number, out: Path): Path {
+  /** b's path relative to time t, computed once per ball, time and segment. */
+  private pathOf(b: BallState, t: number): Path {
+    const out = this.paths[b.index]!;
+    if (this.pathTime[b.index] === t && this.pathVersion[b.index] === b.version) return out;
+    this.pathTime[b.index] = t;
+    this.pathVersion[b.index] = b.version;
     const s = sampleAt(b, t - b.t0, this.cloth, this.sa);
     out.x = s.x;
     out.y = s.y;
@@ -158,7 +168,7 @@ class Simulation {
     let kind: Kind = Kind.Motion;
     let target = -1;
     if (this.translating(b)) {
-      const p = this.pathAt(b, t, this.pathA);
+      const p = this.pathOf(b, t);
       const H = best;
       const box = sweptBox(p, H, this.R, this.boxA);
       const cushions = this.table.cushions;
@@ -195,8 +205,8 @@ class Simulation {
     if (a.motion === 'pocketed' || b.motion === 'pocketed') return;
     const H = Math.min(ma ? a.tEnd : Infinity, mb ? b.tEnd : Infinity) - t;
     if (!(H >= 0)) return;
-    const pa = this.pathAt(a, t, this.pathA);
-    const pb = this.pathAt(b, t, this.pathB);
+    const pa = this.pathOf(a, t);
+    const pb = this.pathOf(b, t);
     if (!boxesOverlap(sweptBox(pa, H, this.R, this.boxA), sweptBox(pb, H, this.R, this.boxB))) return;
     const tau = ballBallTime(pa, pb, this.R, H, this.rootTol);
     if (tau === Infinity) return;
