@@ -57,8 +57,8 @@ export class Dopri5 {
   /** The step's end (5th order). */
   readonly y1 = new Float64Array(DIM);
   /** Max over components of |error estimate| / atol. */
-  err = 0;
-  private h = 0;
+  err = -0;
+  private h = -0;
   private readonly r1 = new Float64Array(DIM);
   private readonly r2 = new Float64Array(DIM);
   private readonly r3 = new Float64Array(DIM);

@@ -36,16 +36,18 @@ export type ContactMode = typeof SLIDE | typeof STICK;
  * The friction model with its per-impact constants and the mode of each contact. One object is
  * reused across impacts; all scratch values are plain number fields (no allocation).
  */
+// Number fields start at -0 (or a fraction), never at a small integer literal: V8 would give
+// them a small-integer representation and deoptimize when the first fraction arrives.
 export class CushionModel {
   /** sin θ, cos θ of the cushion contact (sin θ = (h - R) / R). */
-  s = 0;
-  c = 0;
-  muW = 0;
-  muS = 0;
+  s = -0;
+  c = -0;
+  muW = -0;
+  muS = -0;
   /** (2/7)(1 - 5/2 sinθ), (2/7) cosθ, (2/7)(5/2 - sinθ): the rolling-condition coefficients. */
-  private q1 = 0;
-  private q2 = 0;
-  private q3 = 0;
+  private q1 = -0;
+  private q2 = -0;
+  private q3 = -0;
 
   modeI: ContactMode = SLIDE;
   modeC: ContactMode = SLIDE;
@@ -54,36 +56,44 @@ export class CushionModel {
    * direction of a slipping contact is taken from (slip - offset), so that after it leaves the
    * stick branch its direction grows from exactly zero.
    */
-  offIx = 0;
-  offIy = 0;
-  offCx = 0;
-  offCy = 0;
+  offIx = -0;
+  offIy = -0;
+  offCx = -0;
+  offCy = -0;
+  /**
+   * Quasi-static slip: the contact slips with the direction its rates enforce (the hint,
+   * re-solved at every step by the solver) instead of the direction of its tiny slip vector,
+   * whose dynamics are stiff near zero. Used from the onset of slip and in the last part of an
+   * approach to zero (see CushionSolver).
+   */
+  qsI = false;
+  qsC = false;
   /** Direction used while a slipping contact's (slip - offset) is below epsSlip (onset). */
-  hintIx = 1;
-  hintIy = 0;
-  hintCx = 1;
-  hintCy = 0;
-  epsSlip = 0;
+  hintIx = 1.5;
+  hintIy = -0;
+  hintCx = 1.5;
+  hintCy = -0;
+  epsSlip = -0;
 
   /**
    * Unit slip directions at the step's start and the smallest stage components of the slips
    * along them, to detect a slip passing zero inside a step.
    */
-  refIx = 0;
-  refIy = 0;
-  refCx = 0;
-  refCy = 0;
-  minDotI = 0;
-  minDotC = 0;
+  refIx = -0;
+  refIy = -0;
+  refCx = -0;
+  refCy = -0;
+  minDotI = -0;
+  minDotC = -0;
   /** True only inside an integration step: enables the continuation past a zero slip. */
   stepping = false;
 
   /** Frictions and table normal of the last evaluation. */
-  gx = 0;
-  gy = 0;
-  hx = 0;
-  hy = 0;
-  nC = 0;
+  gx = -0;
+  gy = -0;
+  hx = -0;
+  hy = -0;
+  nC = -0;
 
   setConstants(s: number, c: number, muW: number, muS: number): void {
     this.s = s;
@@ -103,6 +113,8 @@ export class CushionModel {
     this.hintIy = 0;
     this.hintCx = 1;
     this.hintCy = 0;
+    this.qsI = false;
+    this.qsC = false;
   }
 
   /** Effective slip at I (slip minus offset). */
@@ -146,16 +158,41 @@ export class CushionModel {
     let hy: number;
     let n: number;
     if (this.modeI === SLIDE) {
-      this.directionI(vx + s * oy - c * oz - this.offIx, -s * vy + ox - this.offIy);
-      gx = -this.muW * this.ux;
-      gy = -this.muW * this.uy;
+      if (this.qsI) {
+        if (!this.qsC || this.modeC === STICK) {
+          // Slaved: the direction I's rates enforce at this very state.
+          this.affineAt(vx, vy, ox, oy);
+          this.onsetDirection(this.ax, this.ay, this.b11, this.b12, this.b22, true);
+          this.hintIx = this.ux;
+          this.hintIy = this.uy;
+        }
+        gx = -this.muW * this.hintIx;
+        gy = -this.muW * this.hintIy;
+      } else {
+        this.directionI(vx + s * oy - c * oz - this.offIx, -s * vy + ox - this.offIy);
+        gx = -this.muW * this.ux;
+        gy = -this.muW * this.uy;
+      }
       n = s - c * gy;
       if (n < 0) n = 0;
       if (this.modeC === SLIDE) {
-        this.directionC(vx - oy - this.offCx, vy + ox - this.offCy);
         const m = this.muS * n;
-        hx = -m * this.ux;
-        hy = -m * this.uy;
+        if (this.qsC) {
+          // Slaved: along C's rates without its own friction (isotropic in h).
+          const ax = (1 - 2.5 * s) * gx;
+          const ay = -c + (2.5 - s) * gy;
+          const an = Math.sqrt(ax * ax + ay * ay);
+          if (an > 0) {
+            this.hintCx = ax / an;
+            this.hintCy = ay / an;
+          }
+          hx = -m * this.hintCx;
+          hy = -m * this.hintCy;
+        } else {
+          this.directionC(vx - oy - this.offCx, vy + ox - this.offCy);
+          hx = -m * this.ux;
+          hy = -m * this.uy;
+        }
       } else {
         // C rolls (eq. 15b): dxC/dp = dyC/dp = 0.
         hx = -this.q1 * gx;
@@ -163,7 +200,12 @@ export class CushionModel {
       }
     } else if (this.modeC === SLIDE) {
       // I rolls (eq. 15a), C slips: dxI/dp = dyI/dp = 0 with h = -μs (s - c gy) u_C.
-      this.directionC(vx - oy - this.offCx, vy + ox - this.offCy);
+      if (this.qsC) {
+        this.ux = this.hintCx;
+        this.uy = this.hintCy;
+      } else {
+        this.directionC(vx - oy - this.offCx, vy + ox - this.offCy);
+      }
       const fx = this.ux;
       const fy = this.uy;
       const k = (2.5 - s) * this.muS * fy;
@@ -287,8 +329,10 @@ export class CushionModel {
     const hy = this.hy;
     const n = this.nC > 0 ? this.nC : 0;
     const norm = Math.sqrt(hx * hx + hy * hy);
+    this.qsC = false;
     if (norm <= this.muS * n) return true;
     this.modeC = SLIDE;
+    this.qsC = true;
     this.hintCx = -hx / norm;
     this.hintCy = -hy / norm;
     return false;
@@ -305,31 +349,116 @@ export class CushionModel {
     this.modeI = STICK;
     this.friction(y[0]!, y[1]!, y[2]!, y[3]!, y[4]!);
     // The rolling branch exists only while its denominator is positive, i.e. nC > 0.
+    this.qsI = false;
     if (this.nC > 0 && this.gx * this.gx + this.gy * this.gy <= this.muW * this.muW) return true;
     this.modeI = SLIDE;
-    // C's slip direction (as friction() would take it).
-    let fx = y[0]! - y[3]! - this.offCx;
-    let fy = y[1]! + y[2]! - this.offCy;
-    const rc = Math.sqrt(fx * fx + fy * fy);
-    if (rc > this.epsSlip) {
-      fx /= rc;
-      fy /= rc;
-    } else {
-      fx = this.hintCx;
-      fy = this.hintCy;
-    }
-    // dxI/dp = 7/2 gx + (1 - 5/2 s) hx, dyI/dp = s c + (s² + 5/2) gy + (5/2 - s) hy,
-    // h = -μs (s - c gy) u_C: affine in g.
-    const ms = this.muS;
-    const ax = -(1 - 2.5 * s) * ms * s * fx;
-    const ay = s * c - (2.5 - s) * ms * s * fy;
-    const b11 = 3.5;
-    const b12 = (1 - 2.5 * s) * ms * c * fx;
-    const b22 = s * s + 2.5 + (2.5 - s) * ms * c * fy;
-    this.onsetDirection(ax, ay, b11, b12, b22);
+    this.qsI = true;
+    this.affineI(y);
+    this.onsetDirection(this.ax, this.ay, this.b11, this.b12, this.b22, false);
     this.hintIx = this.ux;
     this.hintIy = this.uy;
     return false;
+  }
+
+  /** I's slip rates as a + B g (filled by affineI), g its friction per unit impulse. */
+  private ax = -0;
+  private ay = -0;
+  private b11 = -0;
+  private b12 = -0;
+  private b22 = -0;
+
+  /**
+   * I's slip rates as an affine function of its friction g at y, the rest frozen. With C
+   * slipping: dxI/dp = 7/2 gx + (1 - 5/2 s) hx, dyI/dp = s c + (s² + 5/2) gy + (5/2 - s) hy,
+   * h = -μs (s - c gy) u_C. With C rolling (h from eq. 15b):
+   * dxI/dp = K1 gx, dyI/dp = 5/7 (1+s) c + K3 gy.
+   */
+  private affineI(y: Float64Array): void {
+    this.affineAt(y[0]!, y[1]!, y[2]!, y[3]!);
+  }
+
+  private affineAt(vx: number, vy: number, ox: number, oy: number): void {
+    const s = this.s;
+    const c = this.c;
+    if (this.modeC === STICK) {
+      this.ax = 0;
+      this.ay = (5 / 7) * (1 + s) * c;
+      this.b11 = 3.5 - (2 / 7) * (1 - 2.5 * s) * (1 - 2.5 * s);
+      this.b12 = 0;
+      this.b22 = s * s + 2.5 - (2 / 7) * (2.5 - s) * (2.5 - s);
+      return;
+    }
+    let fx: number;
+    let fy: number;
+    if (this.qsC) {
+      fx = this.hintCx;
+      fy = this.hintCy;
+    } else {
+      fx = vx - oy - this.offCx;
+      fy = vy + ox - this.offCy;
+      const rc = Math.sqrt(fx * fx + fy * fy);
+      if (rc > this.epsSlip) {
+        fx /= rc;
+        fy /= rc;
+      } else {
+        fx = this.hintCx;
+        fy = this.hintCy;
+      }
+    }
+    const ms = this.muS;
+    this.ax = -(1 - 2.5 * s) * ms * s * fx;
+    this.ay = s * c - (2.5 - s) * ms * s * fy;
+    this.b11 = 3.5;
+    this.b12 = (1 - 2.5 * s) * ms * c * fx;
+    this.b22 = s * s + 2.5 + (2.5 - s) * ms * c * fy;
+  }
+
+  /**
+   * The direction I's slip would keep if it were slaved to its rates (the quasi-static slip):
+   * u with (λ + μw B) u = a, |u| = 1, λ of either sign (λ < 0: the slip shrinks along u).
+   * Leaves u in (ux, uy) and returns λ, the rate of the slip speed.
+   */
+  slavedI(y: Float64Array): number {
+    this.affineI(y);
+    return this.onsetDirection(this.ax, this.ay, this.b11, this.b12, this.b22, true);
+  }
+
+  /**
+   * As slavedI for C while I slips: C's rates are a + 7/2 h with h = -μs N u, isotropic, so
+   * u = a / |a| and λ = |a| - 7/2 μs N. NaN when I rolls (then C's rates are not of this form).
+   */
+  slavedC(y: Float64Array): number {
+    if (this.modeI === STICK) return NaN;
+    const s = this.s;
+    const c = this.c;
+    let gx: number;
+    let gy: number;
+    if (this.qsI) {
+      gx = -this.muW * this.hintIx;
+      gy = -this.muW * this.hintIy;
+    } else {
+      let ex = y[0]! + s * y[3]! - c * y[4]! - this.offIx;
+      let ey = -s * y[1]! + y[2]! - this.offIy;
+      const r = Math.sqrt(ex * ex + ey * ey);
+      if (r > this.epsSlip) {
+        ex /= r;
+        ey /= r;
+      } else {
+        ex = this.hintIx;
+        ey = this.hintIy;
+      }
+      gx = -this.muW * ex;
+      gy = -this.muW * ey;
+    }
+    let n = s - c * gy;
+    if (n < 0) n = 0;
+    const ax = (1 - 2.5 * s) * gx;
+    const ay = -c + (2.5 - s) * gy;
+    const an = Math.sqrt(ax * ax + ay * ay);
+    if (!(an > 0)) return NaN;
+    this.ux = ax / an;
+    this.uy = ay / an;
+    return an - 3.5 * this.muS * n;
   }
 
   /**
@@ -351,7 +480,7 @@ export class CushionModel {
     }
     const k1 = 3.5 - (2 / 7) * (1 - 2.5 * s) * (1 - 2.5 * s);
     const k3 = s * s + 2.5 - (2 / 7) * (2.5 - s) * (2.5 - s);
-    this.onsetDirection(0, (5 / 7) * (1 + s) * c, k1, 0, k3);
+    this.onsetDirection(0, (5 / 7) * (1 + s) * c, k1, 0, k3, false);
     const gx = -this.muW * this.ux;
     const gy = -this.muW * this.uy;
     const hx = -this.q1 * gx;
@@ -374,40 +503,68 @@ export class CushionModel {
   }
 
   /** Output of onsetDirection. */
-  ux = 1;
-  uy = 0;
+  ux = 1.5;
+  uy = -0;
 
   /**
-   * The unit vector u with (λ I + μw B) u = a for some λ >= 0, B = [[b11, b12], [0, b22]]:
-   * the direction in which a slip starts from zero when its rates are a + B g and g = -μw u
-   * (the slip must then grow along u). Bisection on λ; a fixed number of halvings, so it always
-   * ends. When μw = 0, u = a / |a|.
+   * The unit vector u with (λ I + μw B) u = a, B = [[b11, b12], [0, b22]]: the direction of a
+   * slip whose rates a + B g, with g = -μw u, point along it (rate λ u). With `anySign` false,
+   * λ >= 0 (a slip leaving zero); otherwise the root with λ above both poles (a slip that may
+   * also shrink). Bisection on λ, a fixed number of halvings, so it always ends. Leaves u in
+   * (ux, uy) and returns λ. When μw = 0, u = a / |a|.
    */
-  private onsetDirection(ax: number, ay: number, b11: number, b12: number, b22: number): void {
+  private onsetDirection(ax: number, ay: number, b11: number, b12: number, b22: number, anySign: boolean): number {
     const mu = this.muW;
     const an = Math.sqrt(ax * ax + ay * ay);
     if (!(an > 0)) {
       this.ux = 1;
       this.uy = 0;
-      return;
+      return 0;
     }
     // Lowest λ for which both diagonal entries are positive.
-    let lo = 0;
+    let lo = anySign ? -Infinity : 0;
     if (-mu * b11 > lo) lo = -mu * b11;
     if (-mu * b22 > lo) lo = -mu * b22;
-    // Above hi = lo + |a| + μ |b12| + 1e-300 every |u| < 1 ... grow until |u(hi)| <= 1.
-    let hi = lo + an + mu * Math.abs(b12);
-    for (let i = 0; i < 200 && this.uNorm2(hi, ax, ay, b11, b12, b22) > 1; i++) hi *= 2;
-    for (let i = 0; i < 200; i++) {
-      const mid = 0.5 * (lo + hi);
-      if (!(mid > lo && mid < hi)) break;
-      if (this.uNorm2(mid, ax, ay, b11, b12, b22) > 1) lo = mid;
-      else hi = mid;
+    if (lo === -Infinity) lo = -an;
+    // Grow hi until |u(hi)| <= 1.
+    let hi = (lo > 0 ? lo : 0) + an + mu * Math.abs(b12);
+    for (let i = 0; i < 200 && this.uNorm2(hi, ax, ay, b11, b12, b22) > 1; i++) hi = 2 * hi + an;
+    if (!(this.uNorm2(lo, ax, ay, b11, b12, b22) > 1)) {
+      // No root above lo (a slip that would shrink although λ >= 0 was asked): λ = lo.
+      hi = lo;
+    }
+    // Illinois regula falsi on f(λ) = 1 / |u(λ)| - 1, increasing, -1 at a pole, >= 0 at hi.
+    let flo = 1 / Math.sqrt(this.uNorm2(lo, ax, ay, b11, b12, b22)) - 1;
+    let fhi = 1 / Math.sqrt(this.uNorm2(hi, ax, ay, b11, b12, b22)) - 1;
+    let side = 0;
+    for (let i = 0; i < 100 && hi > lo && fhi > 0; i++) {
+      let x = lo + (hi - lo) * (flo / (flo - fhi));
+      if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
+      if (!(x > lo && x < hi)) break;
+      const fx = 1 / Math.sqrt(this.uNorm2(x, ax, ay, b11, b12, b22)) - 1;
+      if (fx < 0) {
+        lo = x;
+        flo = fx;
+        if (side === 1) fhi *= 0.5;
+        side = 1;
+      } else {
+        hi = x;
+        fhi = fx;
+        if (side === -1) flo *= 0.5;
+        side = -1;
+      }
+      if (hi - lo <= 1e-13 * (Math.abs(hi) + an)) break;
     }
     this.uNorm2(hi, ax, ay, b11, b12, b22);
     const un = Math.sqrt(this.ux * this.ux + this.uy * this.uy);
-    this.ux /= un;
-    this.uy /= un;
+    if (un > 0) {
+      this.ux /= un;
+      this.uy /= un;
+    } else {
+      this.ux = ax / an;
+      this.uy = ay / an;
+    }
+    return hi;
   }
 
   private uNorm2(lam: number, ax: number, ay: number, b11: number, b12: number, b22: number): number {

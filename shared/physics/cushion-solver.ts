@@ -27,6 +27,15 @@ const EVENT_FRACTION = 0.1;
 const ZERO_FRACTION = 1e-13;
 /** Slip below this fraction of the speed: a slipping contact uses its onset direction. */
 const HINT_FRACTION = 1e-14;
+/**
+ * Quasi-static slip (see CushionModel.qsI). A slip below QS_RHO × speed whose direction u is
+ * within δ of the slaved direction u*, with δ × slip <= QS_FRACTION × tolerance × speed, is
+ * slaved from then on (the neglected part of its motion is O(δ × slip)); a slaved slip that
+ * grows beyond QS_EXIT × speed follows its own direction again.
+ */
+const QS_RHO = 1e-2;
+const QS_FRACTION = 0.1;
+const QS_EXIT = 1e-5;
 
 const COMPRESSION = 0;
 const RESTITUTION = 1;
@@ -65,12 +74,13 @@ export class CushionSolver {
   private readonly ye = new Float64Array(DIM);
   private readonly kd = new Float64Array(DIM);
   private readonly atol = new Float64Array(DIM);
-  private p = 0;
+  private p = -0;
   private phase = COMPRESSION;
-  private wEnd = 0;
-  private epsEv = 0;
-  private M = 1;
-  private R = 1;
+  private wEnd = -0;
+  private epsEv = -0;
+  private M = 1.5;
+  private R = 1.5;
+  private V = 1.5;
   /** How the last impact ended. */
   outcome: CushionOutcome = 'restitution';
   /** Steps taken (accepted and rejected) by the last impact. */
@@ -104,6 +114,8 @@ export class CushionSolver {
     y[5] = 0;
     const V = Math.sqrt(vx * vx + vy * vy);
     const at = tol * V;
+    const tolV = at;
+    this.V = V;
     const atol = this.atol;
     for (let i = 0; i < 5; i++) atol[i] = at;
     // The end is where W meets its target: an error dW moves it by dW / (c |vy|).
@@ -138,7 +150,14 @@ export class CushionSolver {
       }
       // Slip-zero prediction: do not step past the point where a slip speed reaches zero.
       let aim = false;
-      if (model.modeI === SLIDE) {
+      if (model.qsI || model.qsC) {
+        const d = this.slavedStart(step);
+        if (d < step) {
+          step = d;
+          aim = true;
+        }
+      }
+      if (model.modeI === SLIDE && !model.qsI) {
         const ex = model.slipIx(y);
         const ey = model.slipIy(y);
         const r = Math.sqrt(ex * ex + ey * ey);
@@ -155,7 +174,7 @@ export class CushionSolver {
           model.refIy = model.hintIy;
         }
       }
-      if (model.modeC === SLIDE) {
+      if (model.modeC === SLIDE && !model.qsC) {
         const ex = model.slipCx(y);
         const ey = model.slipCy(y);
         const r = Math.sqrt(ex * ex + ey * ey);
@@ -188,7 +207,7 @@ export class CushionSolver {
         step *= t;
         continue;
       }
-      const err = rk.err; if (process.env.DBG) console.log("try", (this.p*this.M).toExponential(5), step.toExponential(3), aim, model.modeI, model.modeC, model.minDotI.toExponential(2), model.minDotC.toExponential(2), err.toExponential(2), this.slipNorm(0).toExponential(3), this.slipNorm(1).toExponential(3), this.phase); if (process.env.DBG) console.log("try", this.p.toExponential(5), step.toExponential(3), aim, model.modeI, model.modeC, model.minDotI.toExponential(2), model.minDotC.toExponential(2), err.toExponential(2), this.slipNorm(0).toExponential(3), this.slipNorm(1).toExponential(3));
+      const err = rk.err;
       if (err > 1) {
         this.rejected++;
         step *= Math.max(0.2, 0.9 * invRoot(err));
@@ -220,6 +239,24 @@ export class CushionSolver {
         const wc = this.ye[5]!;
         this.wEnd = wc - ee2 * wc;
         this.phase = RESTITUTION;
+        if (this.slipAtZero(this.ye)) {
+          // A slip reaches zero together with vy (e.g. head-on with one contact rolling): stop
+          // the step here and let the rolling conditions decide before restitution starts.
+          this.recordTrace(step, from);
+          y.set(this.ye);
+          this.p += from * step;
+          if (this.enterZero(model.modeI === SLIDE && this.slipNorm(0) <= 10 * this.epsEv,
+            model.modeC === SLIDE && this.slipNorm(1) <= 10 * this.epsEv)) {
+            this.finishStalled();
+            return;
+          }
+          model.derivative(y, rk.k1);
+          if (ee2 === 0 || !(rk.k1[1]! < 0)) {
+            if (ee2 !== 0) this.finishStalled();
+            return;
+          }
+          continue;
+        }
         model.derivative(this.ye, this.kd);
         if (ee2 === 0) {
           endAt = from;
@@ -287,6 +324,8 @@ export class CushionSolver {
           return;
         }
         model.derivative(y, rk.k1);
+      } else if (this.slaveSmallSlips(tolV)) {
+        model.derivative(y, rk.k1);
       }
       step *= Math.min(5, Math.max(0.2, 0.9 * invRoot(err)));
     }
@@ -320,6 +359,111 @@ export class CushionSolver {
     return t < 0.01 ? 0.01 : t > 0.99 ? 0.99 : t;
   }
 
+  /**
+   * At a step's start, for each slaved (quasi-static) contact: re-solve its direction, let it
+   * follow its own direction again if it has grown past QS_EXIT, and return the impulse step
+   * after which its slip would reach zero (Infinity if it does not shrink).
+   */
+  private slavedStart(step: number): number {
+    const m = this.model;
+    const y = this.y;
+    let d = Infinity;
+    for (let contact = 0; contact < 2; contact++) {
+      const qs = contact === 0 ? m.qsI : m.qsC;
+      if (!qs) continue;
+      const lam = contact === 0 ? m.slavedI(y) : m.slavedC(y);
+      const ex = contact === 0 ? m.slipIx(y) : m.slipCx(y);
+      const ey = contact === 0 ? m.slipIy(y) : m.slipCy(y);
+      const r = Math.sqrt(ex * ex + ey * ey);
+      if (!(lam === lam) || (lam > 0 && r > QS_EXIT * this.V)) {
+        // Not available (C with I rolling) or grown: the slip follows its own direction.
+        if (contact === 0) m.qsI = false;
+        else m.qsC = false;
+        if (r > m.epsSlip) {
+          if (contact === 0) {
+            m.refIx = ex / r;
+            m.refIy = ey / r;
+          } else {
+            m.refCx = ex / r;
+            m.refCy = ey / r;
+          }
+        }
+        continue;
+      }
+      if (contact === 0) {
+        m.hintIx = m.ux;
+        m.hintIy = m.uy;
+      } else {
+        m.hintCx = m.ux;
+        m.hintCy = m.uy;
+      }
+      const along = ex * m.ux + ey * m.uy;
+      if (lam < 0 && along > 0) {
+        const t = along / -lam;
+        if (t < d) d = t;
+      }
+    }
+    return d < step ? d : step;
+  }
+
+  /**
+   * After an accepted step: a slipping contact with a small slip whose direction already
+   * follows the slaved one closely enough (δ × slip <= QS_FRACTION × tolerance) becomes slaved;
+   * its offset absorbs the O(δ × slip) difference. True when a contact changed.
+   */
+  private slaveSmallSlips(tolV: number): boolean {
+    const m = this.model;
+    const y = this.y;
+    let changed = false;
+    for (let contact = 0; contact < 2; contact++) {
+      const sliding = contact === 0 ? m.modeI === SLIDE && !m.qsI : m.modeC === SLIDE && !m.qsC;
+      if (!sliding) continue;
+      const ex = contact === 0 ? m.slipIx(y) : m.slipCx(y);
+      const ey = contact === 0 ? m.slipIy(y) : m.slipCy(y);
+      const r = Math.sqrt(ex * ex + ey * ey);
+      if (!(r <= QS_RHO * this.V) || !(r > 0)) continue;
+      const lam = contact === 0 ? m.slavedI(y) : m.slavedC(y);
+      if (!(lam === lam)) continue;
+      const dx = ex / r - m.ux;
+      const dy = ey / r - m.uy;
+      const delta = Math.sqrt(dx * dx + dy * dy);
+      if (!(delta * r <= QS_FRACTION * tolV)) continue;
+      // Slave it: its effective slip becomes r u* (offset absorbs r (u - u*)).
+      if (contact === 0) {
+        m.qsI = true;
+        m.hintIx = m.ux;
+        m.hintIy = m.uy;
+        m.offIx += ex - r * m.ux;
+        m.offIy += ey - r * m.uy;
+      } else {
+        m.qsC = true;
+        m.hintCx = m.ux;
+        m.hintCy = m.uy;
+        m.offCx += ex - r * m.ux;
+        m.offCy += ey - r * m.uy;
+      }
+      changed = true;
+    }
+    return changed;
+  }
+
+  /** Whether a slipping contact's slip is (within 10 event tolerances) zero at state ys. */
+  private slipAtZero(ys: Float64Array): boolean {
+    const m = this.model;
+    const lim = 10 * this.epsEv;
+    if (m.modeI === SLIDE) {
+      const ex = m.slipIx(ys);
+      const ey = m.slipIy(ys);
+      if (ex * ex + ey * ey <= lim * lim) return true;
+    }
+    if (m.modeC === SLIDE) {
+      const ex = m.slipCx(ys);
+      const ey = m.slipCy(ys);
+      if (ex * ex + ey * ey <= lim * lim) return true;
+    }
+    return false;
+  }
+
   /** |effective slip| of contact 0 (I) or 1 (C) at the current state. */
   private slipNorm(contact: number): number {
     const m = this.model;
@@ -345,7 +489,6 @@ export class CushionSolver {
       m.offCx = y[0]! - y[3]!;
       m.offCy = y[1]! + y[2]!;
     }
-    if (process.env.DBG) console.log('KER zero', this.p * this.M, zI, zC, m.slipIx(y), m.slipIy(y), m.slipCx(y), m.slipCy(y), y[1]);
     const atI = zI || m.modeI === STICK;
     const atC = zC || m.modeC === STICK;
     if (atI && atC) return m.onsetBoth();
@@ -357,12 +500,12 @@ export class CushionSolver {
   /** The stuck contact needs more than its friction cone: it starts to slip. */
   private leaveStick(): void {
     const m = this.model;
-    if (process.env.DBG) console.log('KER leave', this.p * this.M, m.modeI, m.modeC);
     const y = this.y;
     m.stickMargin(y); // fills the rolling frictions at y
     if (m.modeI === STICK) {
       const n = Math.sqrt(m.gx * m.gx + m.gy * m.gy);
       m.modeI = SLIDE;
+      m.qsI = true;
       m.offIx = y[0]! + m.s * y[3]! - m.c * y[4]!;
       m.offIy = -m.s * y[1]! + y[2]!;
       if (n > 0) {
@@ -372,6 +515,7 @@ export class CushionSolver {
     } else {
       const n = Math.sqrt(m.hx * m.hx + m.hy * m.hy);
       m.modeC = SLIDE;
+      m.qsC = true;
       m.offCx = y[0]! - y[3]!;
       m.offCy = y[1]! + y[2]!;
       if (n > 0) {

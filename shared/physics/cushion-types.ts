@@ -56,7 +56,7 @@ export type CushionOutcome =
 
 /** Tolerance of each named setting (relative local error per step). */
 export const CUSHION_TOLERANCES: Readonly<Record<CushionToleranceName, number>> = {
-  accurate: 1e-8,
+  accurate: 1e-7,
   balanced: 1e-6,
   fast: 1e-4,
 };

@@ -2,9 +2,6 @@
 import type { CushionOptions, CushionParams, CushionState } from './cushion-types.ts';
 import { CUSHION_TOLERANCES } from './cushion-types.ts';
 
-const STATE_FIELDS = ['vx', 'vy', 'wx', 'wy', 'wz'] as const;
-const PARAM_FIELDS = ['M', 'R', 'h', 'ee', 'muS', 'muW'] as const;
-
 /** Smallest and largest numeric tolerance accepted. */
 export const MIN_TOLERANCE = 1e-12;
 export const MAX_TOLERANCE = 1e-2;
@@ -13,27 +10,42 @@ function fail(field: string, rule: string, value: unknown): never {
   throw new RangeError(`cushionRebound: ${field} ${rule}, got ${String(value)}`);
 }
 
-function finite(field: string, value: unknown): number {
-  if (typeof value !== 'number' || !Number.isFinite(value)) fail(field, 'must be a finite number', value);
-  return value;
+// Number.isFinite is false for NaN, ±Infinity and non-numbers. The messages are built only on
+// failure (this runs on every impact).
+function checkFinite(name: string, field: string, value: unknown): void {
+  if (typeof value !== 'number' || !Number.isFinite(value)) fail(`${name}.${field}`, 'must be a finite number', value);
 }
 
 export function validateState(state: CushionState): void {
   if (state === null || typeof state !== 'object') fail('state', 'must be an object', state);
-  for (const f of STATE_FIELDS) finite(`state.${f}`, state[f]);
+  if (!(Number.isFinite(state.vx) && Number.isFinite(state.vy) && Number.isFinite(state.wx) &&
+    Number.isFinite(state.wy) && Number.isFinite(state.wz))) {
+    checkFinite('state', 'vx', state.vx);
+    checkFinite('state', 'vy', state.vy);
+    checkFinite('state', 'wx', state.wx);
+    checkFinite('state', 'wy', state.wy);
+    checkFinite('state', 'wz', state.wz);
+  }
 }
 
 export function validateParams(params: CushionParams): void {
   if (params === null || typeof params !== 'object') fail('params', 'must be an object', params);
-  for (const f of PARAM_FIELDS) finite(`params.${f}`, params[f]);
-  if (!(params.M > 0)) fail('params.M', 'must be positive', params.M);
-  if (!(params.R > 0)) fail('params.R', 'must be positive', params.R);
-  if (!(params.h > params.R && params.h < 2 * params.R)) {
-    fail('params.h', `must lie in (R, 2R) = (${params.R}, ${2 * params.R})`, params.h);
+  const { M, R, h, ee, muS, muW } = params;
+  if (!(Number.isFinite(M) && Number.isFinite(R) && Number.isFinite(h) && Number.isFinite(ee) &&
+    Number.isFinite(muS) && Number.isFinite(muW))) {
+    checkFinite('params', 'M', M);
+    checkFinite('params', 'R', R);
+    checkFinite('params', 'h', h);
+    checkFinite('params', 'ee', ee);
+    checkFinite('params', 'muS', muS);
+    checkFinite('params', 'muW', muW);
   }
-  if (!(params.ee >= 0 && params.ee <= 1)) fail('params.ee', 'must lie in [0, 1]', params.ee);
-  if (!(params.muS >= 0)) fail('params.muS', 'must be non-negative', params.muS);
-  if (!(params.muW >= 0)) fail('params.muW', 'must be non-negative', params.muW);
+  if (!(M > 0)) fail('params.M', 'must be positive', M);
+  if (!(R > 0)) fail('params.R', 'must be positive', R);
+  if (!(h > R && h < 2 * R)) fail('params.h', `must lie in (R, 2R) = (${R}, ${2 * R})`, h);
+  if (!(ee >= 0 && ee <= 1)) fail('params.ee', 'must lie in [0, 1]', ee);
+  if (!(muS >= 0)) fail('params.muS', 'must be non-negative', muS);
+  if (!(muW >= 0)) fail('params.muW', 'must be non-negative', muW);
 }
 
 /** The numeric tolerance chosen by the options (default: 'accurate'). */
@@ -48,7 +60,8 @@ export function resolveTolerance(options: CushionOptions | undefined): number {
     }
     fail('options.tolerance', `must be one of ${Object.keys(CUSHION_TOLERANCES).join(', ')} or a number`, t);
   }
-  const v = finite('options.tolerance', t);
+  if (typeof t !== 'number' || !Number.isFinite(t)) fail('options.tolerance', 'must be a finite number', t);
+  const v = t;
   if (!(v >= MIN_TOLERANCE && v <= MAX_TOLERANCE)) {
     fail('options.tolerance', `must lie in [${MIN_TOLERANCE}, ${MAX_TOLERANCE}]`, v);
   }

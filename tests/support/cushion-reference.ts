@@ -36,7 +36,16 @@ interface Ctx {
   offI: [number, number];
   offC: [number, number];
   tiny: number;
+  /**
+   * A slip growing from zero is stiff (its direction relaxes at a rate ~ 1/slip): while it is
+   * below SLAVE_LIMIT × V0 it takes the direction its rates enforce, re-solved every step.
+   */
+  slaveI: boolean;
+  slaveC: boolean;
 }
+
+/** Slip (fraction of V0) up to which a slip growing from zero is slaved to its rates. */
+const SLAVE_LIMIT = 1e-5;
 
 function slips(ctx: Ctx, y: Vec): [number, number, number, number] {
   const { R, s, c } = ctx;
@@ -97,8 +106,8 @@ function solve2(a: number, b: number, c: number, d: number, r0: number, r1: numb
 /** Frictions (g, h) in the current modes. */
 function frictions(ctx: Ctx, y: Vec): { g: [number, number]; h: [number, number] } {
   const [xI, yI, xC, yC] = slips(ctx, y);
-  const uI = unit(xI, yI, ctx.dirI, ctx.tiny);
-  const uC = unit(xC, yC, ctx.dirC, ctx.tiny);
+  const uI = ctx.slaveI ? ctx.dirI : unit(xI, yI, ctx.dirI, ctx.tiny);
+  const uC = ctx.slaveC ? ctx.dirC : unit(xC, yC, ctx.dirC, ctx.tiny);
   if (!ctx.stickI && !ctx.stickC) {
     const g: [number, number] = [-ctx.muW * uI[0], -ctx.muW * uI[1]];
     const n = tableNormal(ctx, g);
@@ -198,7 +207,7 @@ function rk4(ctx: Ctx, y: Vec, h: number, watch: { dotI: number; dotC: number; r
  * with positive projection, then bisection. rateOf(u) gives the slip rate for direction u.
  */
 function onsetDirection(rateOf: (u: [number, number]) => [number, number]): [number, number] {
-  const N = 3600;
+  const N = 720;
   const cross = (a: number): { x: number; dot: number } => {
     const u: [number, number] = [Math.cos(a), Math.sin(a)];
     const r = rateOf(u);
@@ -214,7 +223,7 @@ function onsetDirection(rateOf: (u: [number, number]) => [number, number]): [num
       let lo = (2 * Math.PI * (i - 1)) / N;
       let hi = a1;
       const slo = Math.sign(prev.x);
-      for (let k = 0; k < 80; k++) {
+      for (let k = 0; k < 60; k++) {
         const mid = 0.5 * (lo + hi);
         if (Math.sign(cross(mid).x) === slo && slo !== 0) lo = mid;
         else hi = mid;
@@ -243,6 +252,7 @@ function decide(ctx: Ctx, y: Vec, zI: boolean, zC: boolean): boolean {
     if (stickExcess(ctx, y) <= 0) return true;
     // C rolls, I slips from zero (its rates with C rolling), if C's cone allows it.
     ctx.stickI = false;
+    ctx.slaveI = true;
     const dir = onsetDirection((u) => {
       ctx.dirI = u;
       const { g, h } = frictions(ctx, y);
@@ -252,6 +262,7 @@ function decide(ctx: Ctx, y: Vec, zI: boolean, zC: boolean): boolean {
     ctx.dirI = dir;
     if (stickExcess(ctx, y) <= 0) return false;
     ctx.stickC = false;
+    ctx.slaveC = true;
     ctx.dirI = [0, 1];
     ctx.dirC = [0, -1];
     return false;
@@ -260,6 +271,7 @@ function decide(ctx: Ctx, y: Vec, zI: boolean, zC: boolean): boolean {
     ctx.stickC = true;
     if (stickExcess(ctx, y) <= 0) return false;
     ctx.stickC = false;
+    ctx.slaveC = true;
     ctx.dirC = onsetDirection((u) => {
       ctx.dirC = u;
       const { g, h } = frictions(ctx, y);
@@ -271,6 +283,7 @@ function decide(ctx: Ctx, y: Vec, zI: boolean, zC: boolean): boolean {
   ctx.stickI = true;
   if (stickExcess(ctx, y) <= 0) return false;
   ctx.stickI = false;
+  ctx.slaveI = true;
   ctx.dirI = onsetDirection((u) => {
     ctx.dirI = u;
     const { g, h } = frictions(ctx, y);
@@ -308,6 +321,8 @@ export function referenceRebound(state: CushionState, params: CushionParams, ste
     stickI: false, stickC: false,
     dirI: [1, 0], dirC: [1, 0], offI: [0, 0], offC: [0, 0],
     tiny: 1e-14 * V,
+    slaveI: false,
+    slaveC: false,
   };
   let y: Vec = [state.vx, state.vy, state.wx, state.wy, state.wz, 0];
   const dP = (M * state.vy) / c / steps;
@@ -315,12 +330,14 @@ export function referenceRebound(state: CushionState, params: CushionParams, ste
   let zeroEvents = 0;
   let compressing = true;
   let wEnd = 0;
-  const zeroTol = 1e-13 * V;
+  const zeroTol = 1e-12 * V;
   const zeroEvent = (zI: boolean, zC: boolean): boolean => {
     zeroEvents++;
     const [xI, yI, xC, yC] = slips({ ...ctx, offI: [0, 0], offC: [0, 0] }, y);
     if (zI) ctx.offI = [xI, yI];
     if (zC) ctx.offC = [xC, yC];
+    if (zI) ctx.slaveI = false;
+    if (zC) ctx.slaveC = false;
     return decide(ctx, y, zI, zC);
   };
   const finish = (outcome: 'restitution' | 'stalled'): ReferenceResult => ({
@@ -338,6 +355,26 @@ export function referenceRebound(state: CushionState, params: CushionParams, ste
   const maxSteps = 1000 * steps;
   let h = dP;
   for (let n = 0; n < maxSteps; n++) {
+    for (const which of [0, 1] as const) {
+      const slaved = which === 0 ? ctx.slaveI : ctx.slaveC;
+      if (!slaved) continue;
+      const e = slips(ctx, y);
+      const rho = which === 0 ? Math.hypot(e[0], e[1]) : Math.hypot(e[2], e[3]);
+      if (rho > SLAVE_LIMIT * V || (which === 1 && ctx.stickI)) {
+        if (which === 0) ctx.slaveI = false;
+        else ctx.slaveC = false;
+        continue;
+      }
+      const dir = onsetDirection((u) => {
+        if (which === 0) ctx.dirI = u;
+        else ctx.dirC = u;
+        const { g, h } = frictions(ctx, y);
+        const r = slipRates(ctx, y, g, h);
+        return which === 0 ? [r[0], r[1]] : [r[2], r[3]];
+      });
+      if (which === 0) ctx.dirI = dir;
+      else ctx.dirC = dir;
+    }
     const [xI, yI, xC, yC] = slips(ctx, y);
     const refI = unit(xI, yI, ctx.dirI, ctx.tiny);
     const refC = unit(xC, yC, ctx.dirC, ctx.tiny);
@@ -345,19 +382,24 @@ export function referenceRebound(state: CushionState, params: CushionParams, ste
     // Then the step is halved until it does not (fast turns, as when a slip passes close to
     // zero, are integrated at a fine step) or until it is negligible: then the slip is at
     // zero (located by Newton steps below).
+    // (A slip that starts from zero takes its onset direction only to first order: no check.)
+    const watchI = !ctx.stickI && !ctx.slaveI && Math.hypot(xI, yI) > zeroTol;
+    const watchC = !ctx.stickC && !ctx.slaveC && Math.hypot(xC, yC) > zeroTol;
     const step = (u: number): { y: Vec; I: boolean; C: boolean } => {
       const w = { dotI: Infinity, dotC: Infinity, refI, refC };
       const yy = rk4(ctx, y, u, w);
-      return { y: yy, I: !ctx.stickI && !(w.dotI > COS_MAX_TURN), C: !ctx.stickC && !(w.dotC > COS_MAX_TURN) };
+      return { y: yy, I: watchI && !(w.dotI > COS_MAX_TURN), C: watchC && !(w.dotC > COS_MAX_TURN) };
     };
     let trial = step(h);
     let zI = false;
     let zC = false;
     if (trial.I || trial.C) {
-      if (h > 1e-9 * dP) {
+      if (h > 1e-12 * dP) {
         h *= 0.5;
         continue;
       }
+      // Still turning fast at a negligible step: the slip is at zero (if Newton steps below
+      // bring it there) or passes too close to zero to resolve (the step is taken as it is).
       zI = trial.I;
       zC = trial.C;
       trial = { y, I: false, C: false };
@@ -416,14 +458,22 @@ export function referenceRebound(state: CushionState, params: CushionParams, ste
       const [sxI, syI, sxC, syC] = slips({ ...ctx, offI: [0, 0], offC: [0, 0] }, y);
       if (ctx.stickI) {
         ctx.stickI = false;
+        ctx.slaveI = true;
         ctx.offI = [sxI, syI];
         ctx.dirI = unit(-g[0], -g[1], [1, 0], 0);
       } else {
         ctx.stickC = false;
+        ctx.slaveC = true;
         ctx.offC = [sxC, syC];
         ctx.dirC = unit(-h[0], -h[1], [1, 0], 0);
       }
-    } else if (zI || zC) {
+    } else {
+      // A watched slip that fell to roundoff in this step is at zero.
+      const e = slips(ctx, y);
+      if (watchI && Math.hypot(e[0], e[1]) <= zeroTol) zI = true;
+      if (watchC && Math.hypot(e[2], e[3]) <= zeroTol) zC = true;
+    }
+    if (!leave && (zI || zC)) {
       // Final approach: Newton steps on the slip speed down to roundoff.
       for (let k = 0; k < 40; k++) {
         const e = slips(ctx, y);
@@ -438,6 +488,14 @@ export function referenceRebound(state: CushionState, params: CushionParams, ste
         const d = rho / -rate;
         y = rk4(ctx, y, d, null);
         P += d;
+      }
+      const e = slips(ctx, y);
+      const rho = zI ? Math.hypot(e[0], e[1]) : Math.hypot(e[2], e[3]);
+      if (rho > 1e-10 * V) {
+        // Not a zero after all: a near miss too close to resolve; take a minimal step past it.
+        y = rk4(ctx, y, 1e-12 * dP, null);
+        P += 1e-12 * dP;
+        continue;
       }
       if (zeroEvent(zI, zC)) return finish('stalled');
     }

@@ -1,0 +1,86 @@
+// Impacts defined once, shared by the cushion tests, the benchmark and the figures.
+import { tableSpec } from '../../shared/physics/index.ts';
+import type { CushionParams, CushionState, TableName } from '../../shared/physics/index.ts';
+
+/** Mathavan et al. 2010's constants (snooker): M, R, h = 7R/5, e_e, μ_s (table), μ_w (cushion). */
+export const PAPER: CushionParams = { M: 0.1406, R: 0.02625, h: 0.02625 * 1.4, ee: 0.98, muS: 0.212, muW: 0.14 };
+
+/**
+ * Each table's ball and cushion nose from shared/physics/tables.ts, with friction and
+ * restitution chosen for the tests (typical values, Alciatore's notes and the paper):
+ * ball-table 0.2, ball-cushion 0.14; cushion restitution 0.85 (pool), 0.98 (snooker, the
+ * paper's), 0.9 (carom).
+ */
+export function tableParams(name: TableName): CushionParams {
+  const t = tableSpec(name);
+  const ee = name === 'pool-9ft' ? 0.85 : name === 'snooker-12ft' ? 0.98 : 0.9;
+  return { M: t.ballMass, R: t.ballRadius, h: t.cushionHeight, ee, muS: 0.2, muW: 0.14 };
+}
+
+export const TABLE_PARAMS: readonly (readonly [string, CushionParams])[] = [
+  ['paper', PAPER],
+  ['pool-9ft', tableParams('pool-9ft')],
+  ['snooker-12ft', tableParams('snooker-12ft')],
+  ['carom-match', tableParams('carom-match')],
+];
+
+/**
+ * The paper's initial state: speed V0 at incidence α (degrees from the cushion line, 90 is
+ * head-on), topspin ω_T = kT V0 / R about the horizontal axis across the path, sidespin
+ * ω_S = kS V0 / R about z: v = (V0 cos α, V0 sin α, 0), ω = (-ω_T sin α, ω_T cos α, ω_S).
+ */
+export function paperState(V0: number, alphaDeg: number, kT: number, kS: number, R: number): CushionState {
+  const a = (alphaDeg * Math.PI) / 180;
+  const wT = (kT * V0) / R;
+  return { vx: V0 * Math.cos(a), vy: V0 * Math.sin(a), wx: -wT * Math.sin(a), wy: wT * Math.cos(a), wz: (kS * V0) / R };
+}
+
+export interface GridCase {
+  readonly V0: number;
+  readonly alpha: number;
+  readonly kT: number;
+  readonly kS: number;
+  readonly state: CushionState;
+}
+
+export const BENCH_ANGLES = [0.5, 5, 15, 25, 35, 45, 55, 65, 75, 85, 89.5] as const;
+export const BENCH_SPEEDS = [0.05, 0.5, 2, 5] as const;
+export const BENCH_TOPSPINS = [-1, 0, 1, 2] as const;
+export const BENCH_SIDESPINS = [-2, 0, 2] as const;
+
+/**
+ * The benchmark grid: 11 incidences × 4 speeds × 4 topspins × 3 sidespins = 528 impacts over
+ * the issue's range (V0 0.05-5 m/s, α 0.5-89.5°, k_T -1..2, k_S -2..2).
+ */
+export function benchGrid(R: number): GridCase[] {
+  const out: GridCase[] = [];
+  for (const alpha of BENCH_ANGLES) {
+    for (const V0 of BENCH_SPEEDS) {
+      for (const kT of BENCH_TOPSPINS) {
+        for (const kS of BENCH_SIDESPINS) out.push({ V0, alpha, kT, kS, state: paperState(V0, alpha, kT, kS, R) });
+      }
+    }
+  }
+  return out;
+}
+
+/** Largest component difference (spins times R) as a fraction of V0. */
+export function relError(
+  a: { vx: number; vy: number; wx: number; wy: number; wz: number },
+  b: { vx: number; vy: number; wx: number; wy: number; wz: number },
+  R: number,
+  V0: number,
+): number {
+  return Math.max(
+    Math.abs(a.vx - b.vx),
+    Math.abs(a.vy - b.vy),
+    R * Math.abs(a.wx - b.wx),
+    R * Math.abs(a.wy - b.wy),
+    R * Math.abs(a.wz - b.wz),
+  ) / V0;
+}
+
+/** Kinetic plus rotational energy (I = 2/5 M R²). */
+export function energy(s: { vx: number; vy: number; wx: number; wy: number; wz: number }, M: number, R: number): number {
+  return 0.5 * M * (s.vx * s.vx + s.vy * s.vy) + 0.2 * M * R * R * (s.wx * s.wx + s.wy * s.wy + s.wz * s.wz);
+}

@@ -1,0 +1,83 @@
+// Accuracy of the kernel at its default setting: every component (spins times R) within 1e-5 V0
+// of the converged reference, on a grid and on random draws over the issue's range (V0 0.05-5
+// m/s, incidence 0.5-89.5°, topspin k -1..2, sidespin k -2..2), with the paper's constants and
+// each table's.
+import fc from 'fast-check';
+import { describe, expect, it } from 'vitest';
+import { cushionImpact, cushionRebound } from '../../shared/physics/index.ts';
+import { MAX_STEPS } from '../../shared/physics/cushion-solver.ts';
+import { referenceRebound } from '../support/cushion-reference.ts';
+import { PAPER, paperState, relError, TABLE_PARAMS } from '../support/cushion-cases.ts';
+
+const LIMIT = 1e-5;
+const ANGLES = [0.5, 5, 20, 45, 70, 85, 89.5];
+const TOPSPINS = [-1, 0, 1, 2];
+const SIDESPINS = [-2, 0, 2];
+const SPEEDS = [0.05, 0.7, 5];
+
+describe('accuracy against the converged reference (default setting)', () => {
+  for (const [name, params] of TABLE_PARAMS) {
+    it(`grid of 84 impacts, ${name} constants: max error < 1e-5 V0`, () => {
+      let worst = 0;
+      let where = '';
+      let i = 0;
+      for (const alpha of ANGLES) {
+        for (const kT of TOPSPINS) {
+          for (const kS of SIDESPINS) {
+            const V0 = SPEEDS[i++ % SPEEDS.length]!;
+            const s = paperState(V0, alpha, kT, kS, params.R);
+            const k = cushionImpact(s, params);
+            const r = referenceRebound(s, params);
+            expect(k.outcome).toBe(r.outcome);
+            expect(k.steps).toBeLessThan(MAX_STEPS / 20);
+            const e = relError(k.state, r.state, params.R, V0);
+            if (e > worst) {
+              worst = e;
+              where = `V0 ${V0} α ${alpha} kT ${kT} kS ${kS}`;
+            }
+          }
+        }
+      }
+      expect(worst, where).toBeLessThan(LIMIT);
+    });
+  }
+
+  it('random draws over the range, the four sets of constants: error < 1e-5 V0', () => {
+    fc.assert(
+      fc.property(
+        fc.double({ min: 0.05, max: 5, noNaN: true }),
+        fc.double({ min: 0.5, max: 89.5, noNaN: true }),
+        fc.double({ min: -1, max: 2, noNaN: true }),
+        fc.double({ min: -2, max: 2, noNaN: true }),
+        fc.integer({ min: 0, max: TABLE_PARAMS.length - 1 }),
+        (V0, alpha, kT, kS, which) => {
+          const params = TABLE_PARAMS[which]![1];
+          const s = paperState(V0, alpha, kT, kS, params.R);
+          const k = cushionRebound(s, params);
+          const r = referenceRebound(s, params).state;
+          return relError(k, r, params.R, V0) < LIMIT;
+        },
+      ),
+      { numRuns: 160, seed: 20101863 },
+    );
+  });
+
+  it('the model is homogeneous in the speeds: a slow impact is a scaled fast one', () => {
+    for (const [alpha, kT, kS] of [[30, 1, 0], [80, -1, 2], [60, 2, -1]] as const) {
+      const a = cushionRebound(paperState(1, alpha, kT, kS, PAPER.R), PAPER);
+      const b = cushionRebound(paperState(0.01, alpha, kT, kS, PAPER.R), PAPER);
+      const scaled = { vx: b.vx * 100, vy: b.vy * 100, wx: b.wx * 100, wy: b.wy * 100, wz: b.wz * 100 };
+      expect(relError(a, scaled, PAPER.R, 1)).toBeLessThan(1e-9);
+    }
+  });
+
+  it('each looser setting is looser but bounded (balanced < 1e-4 V0, fast < 1e-2 V0)', () => {
+    for (const alpha of [10, 45, 80]) {
+      const s = paperState(1, alpha, 1, 1, PAPER.R);
+      const r = referenceRebound(s, PAPER).state;
+      expect(relError(cushionRebound(s, PAPER, { tolerance: 'balanced' }), r, PAPER.R, 1)).toBeLessThan(1e-4);
+      expect(relError(cushionRebound(s, PAPER, { tolerance: 'fast' }), r, PAPER.R, 1)).toBeLessThan(1e-2);
+      expect(relError(cushionRebound(s, PAPER, { tolerance: 1e-9 }), r, PAPER.R, 1)).toBeLessThan(1e-7);
+    }
+  });
+});
