@@ -1,0 +1,260 @@
+// Hard cases and invariants of the cushion kernel (issue 3, "Stability"): grazing, very slow and
+// very fast impacts, extreme spin, exact zeros head-on, mirror symmetry, frictionless and
+// extreme restitution, the impact whose restitution can never reach its target, no impact,
+// bad input, and energy that never grows.
+import fc from 'fast-check';
+import { describe, expect, it } from 'vitest';
+import { cushionImpact, cushionRebound } from '../../shared/physics/index.ts';
+import type { CushionParams, CushionState } from '../../shared/physics/index.ts';
+import { MAX_STEPS } from '../../shared/physics/cushion-solver.ts';
+import { referenceRebound } from '../support/cushion-reference.ts';
+import { energy, PAPER, paperState, relError, TABLE_PARAMS } from '../support/cushion-cases.ts';
+
+const { M, R } = PAPER;
+/** Roundoff allowance on energy: the model dissipates or (frictionless, e_e = 1) conserves. */
+const ENERGY_SLACK = 1e-12;
+
+function finite(s: CushionState): boolean {
+  return [s.vx, s.vy, s.wx, s.wy, s.wz].every(Number.isFinite);
+}
+
+function noEnergyGained(s: CushionState, params: CushionParams = PAPER): CushionState {
+  const out = cushionRebound(s, params);
+  expect(finite(out)).toBe(true);
+  expect(energy(out, params.M, params.R)).toBeLessThanOrEqual(energy(s, params.M, params.R) * (1 + ENERGY_SLACK));
+  return out;
+}
+
+function matchesReference(s: CushionState, params: CushionParams = PAPER): void {
+  const k = cushionImpact(s, params);
+  const r = referenceRebound(s, params);
+  expect(k.outcome).toBe(r.outcome);
+  expect(relError(k.state, r.state, params.R, Math.hypot(s.vx, s.vy))).toBeLessThan(1e-5);
+}
+
+describe('grazing incidence', () => {
+  it.each([0.5, 0.1])('%f°: rebounds, loses energy, matches the reference', (alpha) => {
+    for (const kT of [-1, 0, 1, 2]) {
+      for (const kS of [-2, 0, 2]) {
+        const s = paperState(2, alpha, kT, kS, R);
+        const out = noEnergyGained(s);
+        expect(out.vy).toBeLessThan(0);
+        matchesReference(s);
+      }
+    }
+  });
+});
+
+describe('speed extremes', () => {
+  it.each([0.01, 0.05])('very slow, %f m/s: finite, no energy gained, matches the reference', (V0) => {
+    for (const alpha of [1, 30, 60, 89]) {
+      const s = paperState(V0, alpha, 1, 1, R);
+      noEnergyGained(s);
+      matchesReference(s);
+    }
+  });
+
+  it('5 m/s, beyond the rigid-cushion limit: finite, no energy gained', () => {
+    for (const alpha of [10, 45, 80, 90]) {
+      for (const kT of [-1, 2]) noEnergyGained(paperState(5, alpha, kT, -2, R));
+    }
+  });
+
+  it('extreme spin, |ω| R = 3 V0, in every direction: finite, no energy gained, matches the reference', () => {
+    for (const [kT, kS] of [[3, 0], [-3, 0], [0, 3], [0, -3], [2.1, 2.1], [-2.1, -2.1]] as const) {
+      for (const alpha of [5, 45, 85]) {
+        const s = paperState(1, alpha, kT, kS, R);
+        noEnergyGained(s);
+        matchesReference(s);
+      }
+    }
+  });
+});
+
+describe('exact zeros and symmetry', () => {
+  it('head-on with natural roll: vx, wy and wz stay exactly 0', () => {
+    for (const [, params] of TABLE_PARAMS) {
+      for (const V0 of [0.05, 1, 5]) {
+        const out = cushionRebound({ vx: 0, vy: V0, wx: -V0 / params.R, wy: 0, wz: 0 }, params);
+        expect(out.vx).toBe(0);
+        expect(out.wy).toBe(0);
+        expect(out.wz).toBe(0);
+        expect(out.vy).toBeLessThan(0);
+      }
+    }
+  });
+
+  it('a slip that is exactly zero at the start (the table contact of a rolling ball) is handled by the rolling conditions', () => {
+    for (const alpha of [20, 50, 80]) {
+      const s = paperState(1, alpha, 1, 0, R);
+      expect(Math.hypot(s.vx - s.wy * R, s.vy + s.wx * R)).toBeLessThan(1e-12);
+      matchesReference(s);
+    }
+    // The cushion contact at zero slip: ω_x R = vy sin θ, vx = 0, no spin about y or z.
+    const sin = (PAPER.h - R) / R;
+    matchesReference({ vx: 0, vy: 1, wx: sin / R, wy: 0, wz: 0 });
+    matchesReference({ vx: 0.3, vy: 1, wx: sin / R, wy: 0, wz: 0.3 / (R * Math.sqrt(1 - sin * sin)) });
+  });
+
+  it('mirror symmetry x -> -x (vx, wy, wz change sign; vy, wx do not) holds to 1e-12', () => {
+    fc.assert(
+      fc.property(
+        fc.double({ min: 0.05, max: 5, noNaN: true }),
+        fc.double({ min: 0.5, max: 89.5, noNaN: true }),
+        fc.double({ min: -1, max: 2, noNaN: true }),
+        fc.double({ min: -2, max: 2, noNaN: true }),
+        (V0, alpha, kT, kS) => {
+          const s = paperState(V0, alpha, kT, kS, R);
+          const a = cushionRebound(s, PAPER);
+          const b = cushionRebound({ vx: -s.vx, vy: s.vy, wx: s.wx, wy: -s.wy, wz: -s.wz }, PAPER);
+          const tol = 1e-12 * V0;
+          return Math.abs(a.vx + b.vx) <= tol && Math.abs(a.vy - b.vy) <= tol &&
+            R * Math.abs(a.wx - b.wx) <= tol && R * Math.abs(a.wy + b.wy) <= tol && R * Math.abs(a.wz + b.wz) <= tol;
+        },
+      ),
+      { numRuns: 200, seed: 7 },
+    );
+  });
+
+  it('is deterministic: the same input gives the same bits', () => {
+    const s = paperState(2, 45, 1.5, 2, R);
+    expect(cushionRebound(s, PAPER)).toEqual(cushionRebound(s, PAPER));
+  });
+});
+
+describe('frictionless and extreme restitution', () => {
+  it('μ_w = 0: the cushion exerts no torque about z (wz unchanged), matches the reference', () => {
+    const params = { ...PAPER, muW: 0 };
+    for (const alpha of [10, 45, 80]) {
+      const s = paperState(1, alpha, 0.5, 1, R);
+      expect(cushionRebound(s, params).wz).toBe(s.wz);
+      matchesReference(s, params);
+    }
+  });
+
+  it('μ_s = 0: matches the reference', () => {
+    for (const alpha of [10, 45, 80]) matchesReference(paperState(1, alpha, 1, -1, R), { ...PAPER, muS: 0 });
+  });
+
+  it('μ_s = μ_w = 0, e_e = 1: vy reverses, nothing else changes, energy is conserved', () => {
+    const params = { ...PAPER, muS: 0, muW: 0, ee: 1 };
+    const s = paperState(1.3, 37, 1, 2, R);
+    const out = cushionRebound(s, params);
+    expect(out.vy).toBeCloseTo(-s.vy, 12);
+    expect(out.vx).toBe(s.vx);
+    expect(out.wx).toBe(s.wx);
+    expect(out.wy).toBe(s.wy);
+    expect(out.wz).toBe(s.wz);
+    expect(Math.abs(energy(out, M, R) / energy(s, M, R) - 1)).toBeLessThan(1e-12);
+  });
+
+  it('e_e = 0: the ball leaves with vy = 0 at the end of compression; e_e = 1 matches the reference', () => {
+    for (const alpha of [20, 60, 89]) {
+      const s = paperState(1, alpha, 1, 1, R);
+      const k = cushionImpact(s, { ...PAPER, ee: 0 });
+      expect(k.outcome).toBe('restitution');
+      expect(Math.abs(k.state.vy)).toBeLessThan(1e-12);
+      matchesReference(s, { ...PAPER, ee: 0 });
+      matchesReference(s, { ...PAPER, ee: 1 });
+    }
+  });
+});
+
+describe('an impact whose restitution can never reach its target', () => {
+  // With friction at least cos θ / (1 + sin θ) at both contacts, both contacts can roll at once:
+  // the rolling conditions then make every rate zero with vy = 0, and the impulse can do no more
+  // work. The documented result: outcome 'stalled', the state at that instant, vy = 0.
+  const sticky = { ...PAPER, muS: 0.8, muW: 0.8, h: 1.8 * R };
+
+  it('ends, outcome stalled, vy = 0, the same as the reference', () => {
+    for (const [alpha, kT, kS] of [[90, 0, 0], [60, -1, 0], [45, 2, 0], [80, 0, 1]] as const) {
+      const s = paperState(1, alpha, kT, kS, R);
+      const k = cushionImpact(s, sticky);
+      expect(k.outcome).toBe('stalled');
+      expect(k.state.vy).toBe(0);
+      expect(k.steps).toBeLessThan(MAX_STEPS / 20);
+      const r = referenceRebound(s, sticky);
+      expect(r.outcome).toBe('stalled');
+      expect(relError(k.state, r.state, R, 1)).toBeLessThan(1e-5);
+      expect(energy(k.state, M, R)).toBeLessThan(energy(s, M, R));
+    }
+  });
+
+  it('never loops: friction up to 2 with the extreme cushion heights ends too', () => {
+    for (const mu of [1, 2]) {
+      for (const h of [1.01 * R, 1.5 * R, 1.99 * R]) {
+        for (const alpha of [3, 45, 89.5]) {
+          const k = cushionImpact(paperState(1, alpha, 1, 1, R), { ...PAPER, muS: mu, muW: mu, h });
+          expect(finite(k.state)).toBe(true);
+          expect(k.steps).toBeLessThan(MAX_STEPS);
+        }
+      }
+    }
+  });
+});
+
+describe('no impact and bad input', () => {
+  it('vy <= 0 returns an equal copy, not the same object', () => {
+    for (const s of [{ vx: 1, vy: 0, wx: 2, wy: 3, wz: 4 }, { vx: -1, vy: -0.5, wx: 0, wy: 1, wz: -4 }]) {
+      const out = cushionRebound(s, PAPER);
+      expect(out).toEqual(s);
+      expect(out).not.toBe(s);
+      expect(cushionImpact(s, PAPER).outcome).toBe('no-impact');
+    }
+  });
+
+  const good: CushionState = { vx: 0.5, vy: 1, wx: 0, wy: 0, wz: 0 };
+  it.each([
+    ['state.vx', { ...good, vx: Number.NaN }, PAPER],
+    ['state.vy', { ...good, vy: Number.POSITIVE_INFINITY }, PAPER],
+    ['state.wx', { ...good, wx: Number.NEGATIVE_INFINITY }, PAPER],
+    ['state.wy', { ...good, wy: Number.NaN }, PAPER],
+    ['state.wz', { ...good, wz: Number.NaN }, PAPER],
+    ['params.M', good, { ...PAPER, M: 0 }],
+    ['params.M', good, { ...PAPER, M: -1 }],
+    ['params.M', good, { ...PAPER, M: Number.NaN }],
+    ['params.R', good, { ...PAPER, R: 0 }],
+    ['params.R', good, { ...PAPER, R: Number.POSITIVE_INFINITY }],
+    ['params.h', good, { ...PAPER, h: PAPER.R }],
+    ['params.h', good, { ...PAPER, h: 2 * PAPER.R }],
+    ['params.h', good, { ...PAPER, h: 0.5 * PAPER.R }],
+    ['params.ee', good, { ...PAPER, ee: -0.1 }],
+    ['params.ee', good, { ...PAPER, ee: 1.01 }],
+    ['params.muS', good, { ...PAPER, muS: -0.01 }],
+    ['params.muW', good, { ...PAPER, muW: -0.01 }],
+    ['params.muW', good, { ...PAPER, muW: Number.NaN }],
+  ])('%s: a RangeError that names it', (field, s, p) => {
+    expect(() => cushionRebound(s, p)).toThrow(RangeError);
+    expect(() => cushionRebound(s, p)).toThrow(`cushionRebound: ${field} `);
+  });
+
+  it('a bad tolerance: a RangeError naming options.tolerance', () => {
+    for (const tolerance of [0, -1, 1, Number.NaN, 'precise' as never]) {
+      expect(() => cushionRebound(good, PAPER, { tolerance })).toThrow(/options\.tolerance/);
+    }
+  });
+});
+
+describe('energy never increases', () => {
+  it('property: over the range and beyond, any constants', () => {
+    fc.assert(
+      fc.property(
+        fc.double({ min: 0.01, max: 8, noNaN: true }),
+        fc.double({ min: 0.1, max: 90, noNaN: true }),
+        fc.double({ min: -3, max: 3, noNaN: true }),
+        fc.double({ min: -3, max: 3, noNaN: true }),
+        fc.double({ min: 1.05, max: 1.95, noNaN: true }),
+        fc.double({ min: 0, max: 1, noNaN: true }),
+        fc.double({ min: 0, max: 0.6, noNaN: true }),
+        fc.double({ min: 0, max: 0.6, noNaN: true }),
+        (V0, alpha, kT, kS, hR, ee, muS, muW) => {
+          const params = { M, R, h: hR * R, ee, muS, muW };
+          const s = paperState(V0, alpha, kT, kS, R);
+          const out = cushionRebound(s, params);
+          return finite(out) && energy(out, M, R) <= energy(s, M, R) * (1 + ENERGY_SLACK);
+        },
+      ),
+      { numRuns: 400, seed: 42 },
+    );
+  });
+});
