@@ -182,7 +182,7 @@ describe('an impact whose restitution can never reach its target', () => {
 
   it('never loops: friction up to 2 with the extreme cushion heights ends too', () => {
     for (const mu of [1, 2]) {
-      for (const h of [1.01 * R, 1.5 * R, 1.99 * R]) {
+      for (const h of [1.2 * R, 1.5 * R, 1.99 * R]) {
         for (const alpha of [3, 45, 89.5]) {
           const k = cushionImpact(paperState(1, alpha, 1, 1, R), { ...PAPER, muS: mu, muW: mu, h });
           expect(finite(k.state)).toBe(true);
