@@ -65,34 +65,71 @@ export class Dopri5 {
   private readonly r4 = new Float64Array(DIM);
   private readonly r5 = new Float64Array(DIM);
 
-  /** One step of size h from y (k1 must hold f(y)). Fills y1, k7 and err. */
+  /** One step of size h from y (k1 must hold f(y)). Fills y1, k7 and err. Unrolled by hand. */
   step(model: CushionModel, y: Float64Array, h: number, atol: Float64Array): void {
     const { k1, k2, k3, k4, k5, k6, k7, yt, y1 } = this;
     this.h = h;
-    for (let i = 0; i < DIM; i++) yt[i] = y[i]! + h * (A21 * k1[i]!);
+    const s0 = y[0]!;
+    const s1 = y[1]!;
+    const s2 = y[2]!;
+    const s3 = y[3]!;
+    const s4 = y[4]!;
+    const s5 = y[5]!;
+    yt[0] = s0 + h * (A21 * k1[0]!);
+    yt[1] = s1 + h * (A21 * k1[1]!);
+    yt[2] = s2 + h * (A21 * k1[2]!);
+    yt[3] = s3 + h * (A21 * k1[3]!);
+    yt[4] = s4 + h * (A21 * k1[4]!);
+    yt[5] = s5 + h * (A21 * k1[5]!);
     model.derivative(yt, k2);
-    for (let i = 0; i < DIM; i++) yt[i] = y[i]! + h * (A31 * k1[i]! + A32 * k2[i]!);
+    yt[0] = s0 + h * (A31 * k1[0]! + A32 * k2[0]!);
+    yt[1] = s1 + h * (A31 * k1[1]! + A32 * k2[1]!);
+    yt[2] = s2 + h * (A31 * k1[2]! + A32 * k2[2]!);
+    yt[3] = s3 + h * (A31 * k1[3]! + A32 * k2[3]!);
+    yt[4] = s4 + h * (A31 * k1[4]! + A32 * k2[4]!);
+    yt[5] = s5 + h * (A31 * k1[5]! + A32 * k2[5]!);
     model.derivative(yt, k3);
-    for (let i = 0; i < DIM; i++) yt[i] = y[i]! + h * (A41 * k1[i]! + A42 * k2[i]! + A43 * k3[i]!);
+    yt[0] = s0 + h * (A41 * k1[0]! + A42 * k2[0]! + A43 * k3[0]!);
+    yt[1] = s1 + h * (A41 * k1[1]! + A42 * k2[1]! + A43 * k3[1]!);
+    yt[2] = s2 + h * (A41 * k1[2]! + A42 * k2[2]! + A43 * k3[2]!);
+    yt[3] = s3 + h * (A41 * k1[3]! + A42 * k2[3]! + A43 * k3[3]!);
+    yt[4] = s4 + h * (A41 * k1[4]! + A42 * k2[4]! + A43 * k3[4]!);
+    yt[5] = s5 + h * (A41 * k1[5]! + A42 * k2[5]! + A43 * k3[5]!);
     model.derivative(yt, k4);
-    for (let i = 0; i < DIM; i++) {
-      yt[i] = y[i]! + h * (A51 * k1[i]! + A52 * k2[i]! + A53 * k3[i]! + A54 * k4[i]!);
-    }
+    yt[0] = s0 + h * (A51 * k1[0]! + A52 * k2[0]! + A53 * k3[0]! + A54 * k4[0]!);
+    yt[1] = s1 + h * (A51 * k1[1]! + A52 * k2[1]! + A53 * k3[1]! + A54 * k4[1]!);
+    yt[2] = s2 + h * (A51 * k1[2]! + A52 * k2[2]! + A53 * k3[2]! + A54 * k4[2]!);
+    yt[3] = s3 + h * (A51 * k1[3]! + A52 * k2[3]! + A53 * k3[3]! + A54 * k4[3]!);
+    yt[4] = s4 + h * (A51 * k1[4]! + A52 * k2[4]! + A53 * k3[4]! + A54 * k4[4]!);
+    yt[5] = s5 + h * (A51 * k1[5]! + A52 * k2[5]! + A53 * k3[5]! + A54 * k4[5]!);
     model.derivative(yt, k5);
-    for (let i = 0; i < DIM; i++) {
-      yt[i] = y[i]! + h * (A61 * k1[i]! + A62 * k2[i]! + A63 * k3[i]! + A64 * k4[i]! + A65 * k5[i]!);
-    }
+    yt[0] = s0 + h * (A61 * k1[0]! + A62 * k2[0]! + A63 * k3[0]! + A64 * k4[0]! + A65 * k5[0]!);
+    yt[1] = s1 + h * (A61 * k1[1]! + A62 * k2[1]! + A63 * k3[1]! + A64 * k4[1]! + A65 * k5[1]!);
+    yt[2] = s2 + h * (A61 * k1[2]! + A62 * k2[2]! + A63 * k3[2]! + A64 * k4[2]! + A65 * k5[2]!);
+    yt[3] = s3 + h * (A61 * k1[3]! + A62 * k2[3]! + A63 * k3[3]! + A64 * k4[3]! + A65 * k5[3]!);
+    yt[4] = s4 + h * (A61 * k1[4]! + A62 * k2[4]! + A63 * k3[4]! + A64 * k4[4]! + A65 * k5[4]!);
+    yt[5] = s5 + h * (A61 * k1[5]! + A62 * k2[5]! + A63 * k3[5]! + A64 * k4[5]! + A65 * k5[5]!);
     model.derivative(yt, k6);
-    for (let i = 0; i < DIM; i++) {
-      y1[i] = y[i]! + h * (B1 * k1[i]! + B3 * k3[i]! + B4 * k4[i]! + B5 * k5[i]! + B6 * k6[i]!);
-    }
+    y1[0] = s0 + h * (B1 * k1[0]! + B3 * k3[0]! + B4 * k4[0]! + B5 * k5[0]! + B6 * k6[0]!);
+    y1[1] = s1 + h * (B1 * k1[1]! + B3 * k3[1]! + B4 * k4[1]! + B5 * k5[1]! + B6 * k6[1]!);
+    y1[2] = s2 + h * (B1 * k1[2]! + B3 * k3[2]! + B4 * k4[2]! + B5 * k5[2]! + B6 * k6[2]!);
+    y1[3] = s3 + h * (B1 * k1[3]! + B3 * k3[3]! + B4 * k4[3]! + B5 * k5[3]! + B6 * k6[3]!);
+    y1[4] = s4 + h * (B1 * k1[4]! + B3 * k3[4]! + B4 * k4[4]! + B5 * k5[4]! + B6 * k6[4]!);
+    y1[5] = s5 + h * (B1 * k1[5]! + B3 * k3[5]! + B4 * k4[5]! + B5 * k5[5]! + B6 * k6[5]!);
     model.derivative(y1, k7);
     let err = 0;
-    for (let i = 0; i < DIM; i++) {
-      const e = h * (E1 * k1[i]! + E3 * k3[i]! + E4 * k4[i]! + E5 * k5[i]! + E6 * k6[i]! + E7 * k7[i]!);
-      const r = Math.abs(e) / atol[i]!;
-      if (r > err) err = r;
-    }
+    const e0 = Math.abs(h * (E1 * k1[0]! + E3 * k3[0]! + E4 * k4[0]! + E5 * k5[0]! + E6 * k6[0]! + E7 * k7[0]!)) / atol[0]!;
+    if (e0 > err) err = e0;
+    const e1 = Math.abs(h * (E1 * k1[1]! + E3 * k3[1]! + E4 * k4[1]! + E5 * k5[1]! + E6 * k6[1]! + E7 * k7[1]!)) / atol[1]!;
+    if (e1 > err) err = e1;
+    const e2 = Math.abs(h * (E1 * k1[2]! + E3 * k3[2]! + E4 * k4[2]! + E5 * k5[2]! + E6 * k6[2]! + E7 * k7[2]!)) / atol[2]!;
+    if (e2 > err) err = e2;
+    const e3 = Math.abs(h * (E1 * k1[3]! + E3 * k3[3]! + E4 * k4[3]! + E5 * k5[3]! + E6 * k6[3]! + E7 * k7[3]!)) / atol[3]!;
+    if (e3 > err) err = e3;
+    const e4 = Math.abs(h * (E1 * k1[4]! + E3 * k3[4]! + E4 * k4[4]! + E5 * k5[4]! + E6 * k6[4]! + E7 * k7[4]!)) / atol[4]!;
+    if (e4 > err) err = e4;
+    const e5 = Math.abs(h * (E1 * k1[5]! + E3 * k3[5]! + E4 * k4[5]! + E5 * k5[5]! + E6 * k6[5]! + E7 * k7[5]!)) / atol[5]!;
+    if (e5 > err) err = e5;
     this.err = err;
   }
 

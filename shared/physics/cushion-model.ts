@@ -251,8 +251,9 @@ export class CushionModel {
       this.ux = this.hintIx;
       this.uy = this.hintIy;
     } else {
-      this.ux = ex / r;
-      this.uy = ey / r;
+      const ir = 1 / r;
+      this.ux = ex * ir;
+      this.uy = ey * ir;
     }
   }
 
@@ -269,8 +270,9 @@ export class CushionModel {
       this.ux = this.hintCx;
       this.uy = this.hintCy;
     } else {
-      this.ux = ex / r;
-      this.uy = ey / r;
+      const ir = 1 / r;
+      this.ux = ex * ir;
+      this.uy = ey * ir;
     }
   }
 

@@ -142,6 +142,7 @@ export class CushionSolver {
     this.recordTrace(0, 0);
 
     let step = 0.25 * vy / c;
+    let errPrev = 1;
     for (;;) {
       if (++this.steps > MAX_STEPS) {
         throw new Error(
@@ -228,7 +229,7 @@ export class CushionSolver {
       let from = 0;
       const ys = this.ye;
       if (stop < 1) rk.denseAll(stop, ys);
-      else ys.set(rk.y1);
+      else copy6(rk.y1, ys);
       if (this.phase === COMPRESSION && ys[1]! <= 0) {
         if (!dense) {
           rk.prepareDense(y);
@@ -243,7 +244,7 @@ export class CushionSolver {
           // A slip reaches zero together with vy (e.g. head-on with one contact rolling): stop
           // the step here and let the rolling conditions decide before restitution starts.
           this.recordTrace(step, from);
-          y.set(this.ye);
+          copy6(this.ye, y);
           this.p += from * step;
           if (this.enterZero(model.modeI === SLIDE && this.slipNorm(0) <= 10 * this.epsEv,
             model.modeC === SLIDE && this.slipNorm(1) <= 10 * this.epsEv)) {
@@ -266,7 +267,7 @@ export class CushionSolver {
           this.outcome = 'stalled';
         }
         if (stop < 1) rk.denseAll(stop, ys);
-        else ys.set(rk.y1);
+        else copy6(rk.y1, ys);
       }
       if (endAt < 0 && this.phase === RESTITUTION) {
         if (ys[5]! <= this.wEnd) {
@@ -291,9 +292,9 @@ export class CushionSolver {
       }
       if (endAt >= 0) {
         if (endAt < 1) rk.denseAll(endAt, this.ye);
-        else this.ye.set(rk.y1);
+        else copy6(rk.y1, this.ye);
         this.recordTrace(step, endAt);
-        y.set(this.ye);
+        copy6(this.ye, y);
         this.p += endAt * step;
         if (this.outcome === 'stalled') y[1] = 0;
         return;
@@ -311,13 +312,17 @@ export class CushionSolver {
         this.recordTrace(step, 1);
       }
       // Slip-zero event: a slipping contact's slip fell (nearly) to zero.
-      const rI0 = model.modeI === SLIDE ? this.slipNorm(0) : 0;
-      const rC0 = model.modeC === SLIDE ? this.slipNorm(1) : 0;
-      y.set(rk.y1);
+      const slideI = model.modeI === SLIDE;
+      const slideC = model.modeC === SLIDE;
+      const rI0 = slideI ? this.slipNorm(0) : 0;
+      const rC0 = slideC ? this.slipNorm(1) : 0;
+      copy6(rk.y1, y);
       rk.swap();
       this.p += step;
-      const zI = model.modeI === SLIDE && this.slipNorm(0) <= this.epsEv && (this.slipNorm(0) < rI0 || model.minDotI < 0);
-      const zC = model.modeC === SLIDE && this.slipNorm(1) <= this.epsEv && (this.slipNorm(1) < rC0 || model.minDotC < 0);
+      const rI1 = slideI ? this.slipNorm(0) : 0;
+      const rC1 = slideC ? this.slipNorm(1) : 0;
+      const zI = slideI && rI1 <= this.epsEv && (rI1 < rI0 || model.minDotI < 0);
+      const zC = slideC && rC1 <= this.epsEv && (rC1 < rC0 || model.minDotC < 0);
       if (zI || zC) {
         if (this.enterZero(zI, zC)) {
           this.finishStalled();
@@ -327,7 +332,11 @@ export class CushionSolver {
       } else if (this.slaveSmallSlips(tolV)) {
         model.derivative(y, rk.k1);
       }
-      step *= Math.min(5, Math.max(0.2, 0.9 * invRoot(err)));
+      // PI control (Gustafsson): err^(-0.125) × errPrev^(0.0625), roughly the usual
+      // err^(-0.7/5) × errPrev^(0.4/5) with square roots only; damps the growth after a step
+      // that went well just before a hard region.
+      step *= Math.min(5, Math.max(0.2, 0.9 * piFactor(err, errPrev)));
+      errPrev = err > 1e-4 ? err : 1e-4;
     }
   }
 
@@ -578,7 +587,7 @@ export class CushionSolver {
     const n = step === 0 ? 1 : 8;
     for (let j = step === 0 ? 0 : 1; j <= n; j++) {
       const theta = step === 0 ? 0 : (upTo * j) / n;
-      if (step === 0) this.ye.set(this.y);
+      if (step === 0) copy6(this.y, this.ye);
       else this.rk.denseAll(theta, this.ye);
       trace.push(this.samplePoint(this.p + theta * step, this.ye));
     }
@@ -603,6 +612,23 @@ export class CushionSolver {
       stickC: m.modeC === STICK,
     };
   }
+}
+
+function copy6(from: Float64Array, to: Float64Array): void {
+  to[0] = from[0]!;
+  to[1] = from[1]!;
+  to[2] = from[2]!;
+  to[3] = from[3]!;
+  to[4] = from[4]!;
+  to[5] = from[5]!;
+}
+
+/** err^(-1/8) × prev^(1/16) with square roots. */
+function piFactor(err: number, prev: number): number {
+  if (!(err > 1e-30)) return 1e6;
+  const q = Math.sqrt(Math.sqrt(Math.sqrt(Math.sqrt(err))));
+  const qp = Math.sqrt(Math.sqrt(Math.sqrt(Math.sqrt(prev))));
+  return qp / (q * q);
 }
 
 /** err^(-3/16) with four square roots: the step-size factor (the optimal exponent is 1/5). */
