@@ -32,6 +32,14 @@ export const CREEP_DISTANCE = 1e-4; // m
  */
 export const TC_TIME = 1e-6;
 
+/**
+ * A ball in more impacts than this at one instant is wedged between others, where elastic TC
+ * bounces could go on for ever: its further impacts at that instant are plastic, and beyond
+ * WEDGED_IMPACTS both balls stop (each step only removes energy).
+ */
+export const ELASTIC_IMPACTS = 6;
+export const WEDGED_IMPACTS = 12;
+
 /** Common normal speed (m/s) of a pressed pair above which stopping it is counted as a notable change. */
 export const PRESS_SPEED = 0.01;
 
@@ -57,7 +65,10 @@ class Simulation {
   readonly ballParams: BallBallParams;
   readonly cushionParams: CushionParams;
   readonly elasticParams: BallBallParams;
+  readonly plasticParams: BallBallParams;
   private readonly lastImpact: number[];
+  /** Impacts of each ball at the instant of its last impact. */
+  private readonly impactsNow: number[];
   /** When each ball was last in a pressed contact (see onBall). */
   private readonly lastPress: number[];
   /** Pressed pairs stopped along their line of centres while moving faster than PRESS_SPEED. */
@@ -85,7 +96,9 @@ class Simulation {
     this.cloth = { R: this.R, g: table.g, muSlide: table.cloth.muSlide, muRoll: table.cloth.muRoll, spinDecel: table.cloth.spinDecel };
     this.ballParams = { R: this.R, ...table.ballBall };
     this.elasticParams = { ...this.ballParams, restitution: 1 };
+    this.plasticParams = { ...this.ballParams, restitution: 0 };
     this.lastImpact = scene.balls.map(() => -Infinity);
+    this.impactsNow = scene.balls.map(() => 0);
     this.lastPress = scene.balls.map(() => -Infinity);
     this.cushionParams = {
       M: table.ballMass,
@@ -226,6 +239,13 @@ class Simulation {
     }
   }
 
+  /** Counts b's impacts at the instant t (1 for the first). */
+  private countImpact(b: BallState, t: number): number {
+    const n = this.lastImpact[b.index] === t ? this.impactsNow[b.index]! + 1 : 1;
+    this.impactsNow[b.index] = n;
+    return n;
+  }
+
   private stale(p: Prediction): boolean {
     if (this.balls[p.a]!.version !== p.versionA) return true;
     return p.kind === Kind.Ball && this.balls[p.b]!.version !== p.versionB;
@@ -301,7 +321,13 @@ class Simulation {
     const speed = ((sa.vx - sb.vx) * nx0 + (sa.vy - sb.vy) * ny0) / d;
     // TC model: a ball struck again within TC_TIME of its last impact bounces elastically.
     const rapid = t - this.lastImpact[a.index]! < TC_TIME || t - this.lastImpact[b.index]! < TC_TIME;
-    collideBalls(sa, sb, rapid ? this.elasticParams : this.ballParams);
+    const repeats = Math.max(this.countImpact(a, t), this.countImpact(b, t));
+    if (repeats > WEDGED_IMPACTS) {
+      // Still trading impacts at this instant: a ball wedged between others. Both stop.
+      for (const s of [sa, sb]) s.vx = s.vy = s.wx = s.wy = 0;
+    } else {
+      collideBalls(sa, sb, repeats > ELASTIC_IMPACTS ? this.plasticParams : rapid ? this.elasticParams : this.ballParams);
+    }
     this.lastImpact[a.index] = t;
     this.lastImpact[b.index] = t;
     settle(sa, this.cloth);
