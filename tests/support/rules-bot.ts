@@ -1,7 +1,7 @@
-// A simple bot that plays a game to its end through a simulate() function: it aims the struck ball
-// straight at the first of legalTargets(), makes the declarations the rules need, and shoots.
-// Written for the real simulation (issue 4) once it exists; until then the tests drive it with
-// the stand-in of rules-fake-sim.ts.
+// A simple bot that plays a game to its end through the real simulate(): for each shot it tries a
+// short, fixed list of candidate shots (for pool and snooker the ghost-ball aim of each legal target
+// into each pocket, for carom a fan of headings with side), simulates each, asks the referee what
+// it would be worth, and plays the best. Deterministic: the same game gives the same shots.
 import {
   applyShot,
   cueBallId,
@@ -16,44 +16,91 @@ import {
   type StrikeParams,
   type TableName,
 } from '../../shared/rules/index.ts';
-import { tableSpec } from '../../shared/physics/tables.ts';
+import { tableSpec } from '../../shared/physics/index.ts';
 
 export type Simulate = (scene: { table: TableName; balls: Ball[] }, shot: StrikeParams) => Outcome;
 
-/** The pocket nearest to a point (by the naming of shared/rules/pockets.ts). */
-export function nearestPocket(table: TableName, p: { x: number; y: number }): PocketId {
-  const L = tableSpec(table).length;
-  const end = p.x < -L / 6 ? 'B' : p.x > L / 6 ? 'T' : 'M';
-  return `${end}${p.y >= 0 ? 'L' : 'R'}` as PocketId;
+/** The referee's verdict on a candidate, as one number: winning, points, keeping the table, no foul. */
+function worth(g: Game, next: Game): number {
+  const me = g.turn;
+  if (next.winner !== null) return next.winner === me ? 1e6 : -1e6;
+  const gained = (next.scores[me] ?? 0) - (g.scores[me] ?? 0);
+  const lost = Object.entries(next.scores).reduce((s, [p, v]) => (p === me ? s : s + v - (g.scores[p] ?? 0)), 0);
+  const foul = next.verdict?.foul ? 1 : 0;
+  return 100 * gained - 100 * lost + (next.turn === me ? 10 : 0) - 20 * foul;
 }
 
-export function botShot(g: Game): Shot {
-  const cueId = cueBallId(g);
-  const cue = g.balls.find((b) => b.id === cueId)!;
-  const targets = legalTargets(g);
-  const targetId = targets[g.shots % Math.max(1, targets.length)] ?? targets[0];
-  const target = g.balls.find((b) => b.id === targetId) ?? cue;
-  // Tests may use Math.atan2: only shared/ must be bit-identical across engines.
-  const heading = Math.atan2(target.y - cue.y, target.x - cue.x);
-  const shot: Shot = { player: g.turn, ball: cueId, heading, speed: 1 + (g.shots % 13) / 10, side: 0, top: 0 };
-  if (g.kind === 'eightball' && targetId === '8' && g.groups !== null) shot.calledPocket = nearestPocket(g.table, target);
+function declarations(g: Game, targetId: string | undefined, pocket: PocketId | undefined, shot: Shot): Shot {
+  if (g.kind === 'eightball' && targetId === '8' && g.groups !== null) shot.calledPocket = pocket ?? 'TL';
   if (g.kind === 'snooker' && targetId !== undefined) {
     const onRed = g.on === 'red' && targetId.startsWith('red');
-    const onColour = g.on === 'colour';
     const onIt = onRed || g.on === targetId;
-    if (onColour || (g.freeBall && !onIt)) shot.nominated = targetId;
+    if (g.on === 'colour' || (g.freeBall && !onIt)) shot.nominated = targetId;
   }
   return shot;
 }
 
+/** The candidate shots for the player on turn. */
+export function candidates(g: Game): Shot[] {
+  const t = tableSpec(g.table);
+  const R = t.ballRadius;
+  const cueId = cueBallId(g);
+  const cue = g.balls.find((b) => b.id === cueId)!;
+  const base = { player: g.turn, ball: cueId, side: 0, top: 0 };
+  const out: Shot[] = [];
+  if (g.kind === 'threecushion') {
+    // A fan of headings at two speeds with running side: some go round the table.
+    for (let i = 0; i < 24; i++) {
+      const heading = (2 * Math.PI * (i + 0.5 * (g.shots % 2))) / 24;
+      out.push({ ...base, heading, speed: 3.5, side: i % 2 ? 0.3 : -0.3 });
+    }
+    return out;
+  }
+  const targets = legalTargets(g).slice(0, 3);
+  for (const id of targets) {
+    const b = g.balls.find((x) => x.id === id);
+    if (!b) continue;
+    for (const p of t.pockets) {
+      const dx = p.x - b.x;
+      const dy = p.y - b.y;
+      const d = Math.hypot(dx, dy);
+      const gx = b.x - (2 * R * dx) / d;
+      const gy = b.y - (2 * R * dy) / d;
+      const heading = Math.atan2(gy - cue.y, gx - cue.x);
+      for (const speed of [1.6, 3]) out.push(declarations(g, id, p.id as PocketId, { ...base, heading, speed }));
+    }
+    out.push(declarations(g, id, undefined, { ...base, heading: Math.atan2(b.y - cue.y, b.x - cue.x), speed: 2 }));
+  }
+  if (out.length === 0) out.push({ ...base, heading: (g.shots % 12) * (Math.PI / 6), speed: 2 });
+  return out;
+}
+
+export function botShot(g: Game, simulate: Simulate): { shot: Shot; outcome: Outcome } {
+  let best: { shot: Shot; outcome: Outcome; value: number } | undefined;
+  const scene = sceneOf(g);
+  for (const shot of candidates(g)) {
+    let outcome: Outcome;
+    let next: Game;
+    try {
+      outcome = simulate(scene, strikeOf(shot));
+      next = applyShot(g, shot, outcome);
+    } catch {
+      continue; // a candidate the referee refuses (say, a declaration that does not apply)
+    }
+    const value = worth(g, next);
+    if (!best || value > best.value) best = { shot, outcome, value };
+  }
+  if (!best) throw new Error(`bot found no playable shot at shot ${g.shots}`);
+  return best;
+}
+
 /** Play until someone wins or maxShots shots were played; returns the final game and every game on the way. */
-export function playToEnd(start: Game, simulate: Simulate, maxShots = 3000): { game: Game; history: Game[] } {
+export function playToEnd(start: Game, simulate: Simulate, maxShots = 1500): { game: Game; history: Game[] } {
   let g = start;
   const history: Game[] = [g];
   for (let i = 0; i < maxShots && g.winner === null; i++) {
-    const shot = botShot(g);
-    const out = simulate(sceneOf(g), strikeOf(shot));
-    g = applyShot(g, shot, out);
+    const { shot, outcome } = botShot(g, simulate);
+    g = applyShot(g, shot, outcome);
     history.push(g);
   }
   return { game: g, history };
