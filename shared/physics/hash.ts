@@ -3,16 +3,25 @@
 // number of events. Equal hashes mean equal bits.
 import type { FinalBall } from './sim-types.ts';
 
-const OFFSET = 0xcbf29ce484222325n;
-const PRIME = 0x100000001b3n;
-const MASK = 0xffffffffffffffffn;
+const TWO_32 = 4294967296;
 
+/**
+ * FNV-1a 64 on two 32-bit halves held in doubles: every product below stays under 2^53, so the
+ * arithmetic is exact on every engine (no BigInt on the hot path).
+ */
 class Fnv64 {
-  private h = OFFSET;
+  private hi = 0xcbf29ce4;
+  private lo = 0x84222325;
   private readonly view = new DataView(new ArrayBuffer(8));
 
   byte(b: number): void {
-    this.h = ((this.h ^ BigInt(b & 0xff)) * PRIME) & MASK;
+    const lo = (this.lo ^ (b & 0xff)) >>> 0;
+    // (hi·2^32 + lo) · (0x100·2^32 + 0x1b3) mod 2^64
+    const a = lo * 0x1b3;
+    const newLo = a % TWO_32;
+    const carry = (a - newLo) / TWO_32;
+    this.hi = (this.hi * 0x1b3 + lo * 0x100 + carry) % TWO_32;
+    this.lo = newLo;
   }
 
   text(s: string): void {
@@ -30,7 +39,7 @@ class Fnv64 {
   }
 
   hex(): string {
-    return this.h.toString(16).padStart(16, '0');
+    return this.hi.toString(16).padStart(8, '0') + this.lo.toString(16).padStart(8, '0');
   }
 }
 
