@@ -54,6 +54,14 @@ function distanceQuartic(dx: number, dy: number, dvx: number, dvy: number, dax: 
   return POLY;
 }
 
+function xAt(p: Path, t: number): number {
+  return p.x + (p.vx + 0.5 * p.ax * t) * t;
+}
+
+function yAt(p: Path, t: number): number {
+  return p.y + (p.vy + 0.5 * p.ay * t) * t;
+}
+
 /** Two balls of radius R meet when their centres are 2R apart. */
 export function ballBallTime(a: Path, b: Path, R: number, H: number, tol: number): number {
   const c = distanceQuartic(b.x - a.x, b.y - a.y, b.vx - a.vx, b.vy - a.vy, b.ax - a.ax, b.ay - a.ay, 2 * R);
@@ -71,11 +79,9 @@ export function segmentTime(p: Path, s: Segment, R: number, H: number, tol: numb
   c[4] = 0;
   const t = nextContact(c, H, tol, 1);
   if (t === Infinity) return t;
-  const x = p.x + (p.vx + 0.5 * p.ax * t) * t;
-  const y = p.y + (p.vy + 0.5 * p.ay * t) * t;
   const ex = s.bx - s.ax;
   const ey = s.by - s.ay;
-  const along = ((x - s.ax) * ex + (y - s.ay) * ey) / (ex * ex + ey * ey);
+  const along = ((xAt(p, t) - s.ax) * ex + (yAt(p, t) - s.ay) * ey) / (ex * ex + ey * ey);
   return along >= 0 && along <= 1 ? t : Infinity;
 }
 
@@ -90,9 +96,7 @@ export function arcTime(p: Path, arc: Arc, R: number, H: number, tol: number): n
   const c = distanceQuartic(p.x - arc.cx, p.y - arc.cy, p.vx, p.vy, p.ax, p.ay, R + arc.r);
   const t = nextContact(c, H, tol, 2 * (R + arc.r));
   if (t === Infinity) return t;
-  const x = p.x + (p.vx + 0.5 * p.ax * t) * t;
-  const y = p.y + (p.vy + 0.5 * p.ay * t) * t;
-  return inArcSpan(arc, x - arc.cx, y - arc.cy) ? t : Infinity;
+  return inArcSpan(arc, xAt(p, t) - arc.cx, yAt(p, t) - arc.cy) ? t : Infinity;
 }
 
 /** A ball drops when its centre enters the pocket's drop circle. */

@@ -153,20 +153,14 @@ class Simulation {
     if (this.pathTime[b.index] === t && this.pathVersion[b.index] === b.version) return out;
     this.pathTime[b.index] = t;
     this.pathVersion[b.index] = b.version;
+    // sampleAt gives a ball that does not translate zero velocity, and its segment zero acceleration.
     const s = sampleAt(b, t - b.t0, this.cloth, this.sa);
     out.x = s.x;
     out.y = s.y;
-    if (b.motion === 'sliding' || b.motion === 'rolling') {
-      out.vx = s.vx;
-      out.vy = s.vy;
-      out.ax = b.ax;
-      out.ay = b.ay;
-    } else {
-      out.vx = 0;
-      out.vy = 0;
-      out.ax = 0;
-      out.ay = 0;
-    }
+    out.vx = s.vx;
+    out.vy = s.vy;
+    out.ax = b.ax;
+    out.ay = b.ay;
     return out;
   }
 
