@@ -45,9 +45,9 @@ export class CushionModel {
   muW = -0;
   muS = -0;
   /** (2/7)(1 - 5/2 sinθ), (2/7) cosθ, (2/7)(5/2 - sinθ): the rolling-condition coefficients. */
-  private q1 = -0;
-  private q2 = -0;
-  private q3 = -0;
+  q1 = -0;
+  q2 = -0;
+  q3 = -0;
 
   modeI: ContactMode = SLIDE;
   modeC: ContactMode = SLIDE;
@@ -274,6 +274,113 @@ export class CushionModel {
       this.ux = ex * ir;
       this.uy = ey * ir;
     }
+  }
+
+  /**
+   * Which branch evalFast handles in the current modes: 0 both slip, 1 I slips and C rolls,
+   * 2 I rolls and C slips (none slaved); -1 otherwise (use derivative()).
+   */
+  fastMode(): number {
+    if (this.modeI === SLIDE) {
+      if (this.qsI) return -1;
+      if (this.modeC === SLIDE) return this.qsC ? -1 : 0;
+      return 1;
+    }
+    if (this.modeC === SLIDE && !this.qsC) return 2;
+    return -1;
+  }
+
+  /** Output of evalFast: dy/dp. */
+  d0 = -0;
+  d1 = -0;
+  d2 = -0;
+  d3 = -0;
+  d4 = -0;
+  d5 = -0;
+
+  /**
+   * derivative() inside a step for the branches of fastMode() (mode >= 0), on scalars, with
+   * the same operations in the same order (so the same bits). Fills d0..d5.
+   */
+  evalFast(mode: number, vx: number, vy: number, ox: number, oy: number, oz: number): void {
+    const s = this.s;
+    const c = this.c;
+    let gx: number;
+    let gy: number;
+    let hx: number;
+    let hy: number;
+    if (mode !== 2) {
+      const ex = vx + s * oy - c * oz - this.offIx;
+      const ey = -s * vy + ox - this.offIy;
+      const d = ex * this.refIx + ey * this.refIy;
+      if (d < this.minDotI) this.minDotI = d;
+      const r = Math.sqrt(ex * ex + ey * ey);
+      let ux: number;
+      let uy: number;
+      if (d <= 0 || r <= this.epsSlip) {
+        ux = this.refIx;
+        uy = this.refIy;
+      } else {
+        const ir = 1 / r;
+        ux = ex * ir;
+        uy = ey * ir;
+      }
+      gx = -this.muW * ux;
+      gy = -this.muW * uy;
+      let n = s - c * gy;
+      if (n < 0) n = 0;
+      if (mode === 0) {
+        const m = this.muS * n;
+        const fx = vx - oy - this.offCx;
+        const fy = vy + ox - this.offCy;
+        const dc = fx * this.refCx + fy * this.refCy;
+        if (dc < this.minDotC) this.minDotC = dc;
+        const rc = Math.sqrt(fx * fx + fy * fy);
+        if (dc <= 0 || rc <= this.epsSlip) {
+          ux = this.refCx;
+          uy = this.refCy;
+        } else {
+          const irc = 1 / rc;
+          ux = fx * irc;
+          uy = fy * irc;
+        }
+        hx = -m * ux;
+        hy = -m * uy;
+      } else {
+        hx = -this.q1 * gx;
+        hy = this.q2 - this.q3 * gy;
+      }
+    } else {
+      const fx0 = vx - oy - this.offCx;
+      const fy0 = vy + ox - this.offCy;
+      const dc = fx0 * this.refCx + fy0 * this.refCy;
+      if (dc < this.minDotC) this.minDotC = dc;
+      const rc = Math.sqrt(fx0 * fx0 + fy0 * fy0);
+      let fx: number;
+      let fy: number;
+      if (dc <= 0 || rc <= this.epsSlip) {
+        fx = this.refCx;
+        fy = this.refCy;
+      } else {
+        const irc = 1 / rc;
+        fx = fx0 * irc;
+        fy = fy0 * irc;
+      }
+      const k = (2.5 - s) * this.muS * fy;
+      const den = s * s + 2.5 + k * c;
+      gy = (k * s - s * c) / den;
+      const n = s - c * gy;
+      const m = this.muS * n;
+      hx = -m * fx;
+      hy = -m * fy;
+      gx = -this.q1 * hx;
+    }
+    this.d0 = gx + hx;
+    this.d1 = -c - s * gy + hy;
+    this.d2 = 2.5 * (gy + hy);
+    this.d3 = 2.5 * (s * gx - hx);
+    this.d4 = -2.5 * c * gx;
+    this.d5 = c * vy;
   }
 
   /** dy/dp at y, written into out. */

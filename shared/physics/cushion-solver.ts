@@ -78,6 +78,8 @@ export class CushionSolver {
   private phase = COMPRESSION;
   private wEnd = -0;
   private epsEv = -0;
+  /** Set by slavedStart: bit 0 (I) and bit 1 (C) for a slaved slip that is zero now. */
+  private zeroNow = 0;
   private M = 1.5;
   private R = 1.5;
   private V = 1.5;
@@ -152,7 +154,16 @@ export class CushionSolver {
       // Slip-zero prediction: do not step past the point where a slip speed reaches zero.
       let aim = false;
       if (model.qsI || model.qsC) {
+        this.zeroNow = 0;
         const d = this.slavedStart(step);
+        if (this.zeroNow !== 0) {
+          if (this.enterZero((this.zeroNow & 1) !== 0, (this.zeroNow & 2) !== 0)) {
+            this.finishStalled();
+            return;
+          }
+          model.derivative(y, rk.k1);
+          continue;
+        }
         if (d < step) {
           step = d;
           aim = true;
@@ -195,7 +206,9 @@ export class CushionSolver {
       model.minDotI = Infinity;
       model.minDotC = Infinity;
       model.stepping = true;
-      rk.step(model, y, step, atol);
+      const fm = model.fastMode();
+      if (fm >= 0) rk.stepFast(model, fm, y, step, atol);
+      else rk.step(model, y, step, atol);
       model.stepping = false;
       const tol0 = -this.epsEv;
       if (model.minDotI < tol0 || model.minDotC < tol0) {
@@ -407,6 +420,33 @@ export class CushionSolver {
         m.hintCy = m.uy;
       }
       const along = ex * m.ux + ey * m.uy;
+      if (lam < 0 && r > m.epsSlip) {
+        // A shrinking slaved slip can only lose its component along u: when what is left
+        // across u is as large (the slaved direction has turned as the state moved), the slip
+        // is at its closest to zero. Within the event band it is zero (the rolling conditions
+        // decide); otherwise it follows its own direction again.
+        const px = ex - along * m.ux;
+        const py = ey - along * m.uy;
+        const across = Math.sqrt(px * px + py * py);
+        if (!(along > across)) {
+          if (r <= 10 * this.epsEv) {
+            this.zeroNow |= contact === 0 ? 1 : 2;
+          } else {
+            if (contact === 0) m.qsI = false;
+            else m.qsC = false;
+            if (r > m.epsSlip) {
+              if (contact === 0) {
+                m.refIx = ex / r;
+                m.refIy = ey / r;
+              } else {
+                m.refCx = ex / r;
+                m.refCy = ey / r;
+              }
+            }
+          }
+          continue;
+        }
+      }
       if (lam < 0 && along > 0) {
         const t = along / -lam;
         if (t < d) d = t;
@@ -433,6 +473,12 @@ export class CushionSolver {
       if (!(r <= QS_RHO * this.V) || !(r > 0)) continue;
       const lam = contact === 0 ? m.slavedI(y) : m.slavedC(y);
       if (!(lam === lam)) continue;
+      // The slaved solution must agree with the slip's own motion: a slip that is shrinking
+      // is never slaved to a direction in which it would grow (and the reverse), else a slip
+      // about to reach zero and roll would slide off in a spurious direction.
+      const k1 = this.rk.k1;
+      const rate = contact === 0 ? ex * m.rateIx(k1) + ey * m.rateIy(k1) : ex * m.rateCx(k1) + ey * m.rateCy(k1);
+      if ((lam > 0) !== (rate > 0)) continue;
       const dx = ex / r - m.ux;
       const dy = ey / r - m.uy;
       const delta = Math.sqrt(dx * dx + dy * dy);

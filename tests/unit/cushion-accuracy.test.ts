@@ -62,6 +62,19 @@ describe('accuracy against the converged reference (default setting)', () => {
     );
   });
 
+  it('a slaved slip stopping just short of zero rolls, as the reference does (regression: 3.7e-2 V0 off)', () => {
+    // Carom constants, a random draw on which a slaved slip at the cushion, aimed at zero, was
+    // left 9e-8 m/s short with its slaved direction turned across it, and slid off instead of
+    // rolling.
+    const params = TABLE_PARAMS[3]![1];
+    const V0 = 3.265877145528793;
+    const s = paperState(V0, 40.74122154712677, 0.00036132335662841797, 0.44324159622192383, params.R);
+    const r = referenceRebound(s, params).state;
+    for (const tolerance of [1e-5, 1e-6, 1e-7, 1e-8]) {
+      expect(relError(cushionRebound(s, params, { tolerance }), r, params.R, V0)).toBeLessThan(LIMIT);
+    }
+  });
+
   it('the model is homogeneous in the speeds: a slow impact is a scaled fast one', () => {
     for (const [alpha, kT, kS] of [[30, 1, 0], [80, -1, 2], [60, 2, -1]] as const) {
       const a = cushionRebound(paperState(1, alpha, kT, kS, PAPER.R), PAPER);
