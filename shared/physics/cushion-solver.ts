@@ -36,6 +36,8 @@ const HINT_FRACTION = 1e-14;
 const QS_RHO = 1e-2;
 const QS_FRACTION = 0.1;
 const QS_EXIT = 1e-5;
+/** Largest turn of a slip direction in one step (radians), predicted from its rate. */
+const TURN_MAX = 0.5;
 
 const COMPRESSION = 0;
 const RESTITUTION = 1;
@@ -176,11 +178,17 @@ export class CushionSolver {
         if (r > model.epsSlip) {
           model.refIx = ex / r;
           model.refIy = ey / r;
-          const rate = (ex * model.rateIx(rk.k1) + ey * model.rateIy(rk.k1)) / r;
+          const rx = model.rateIx(rk.k1);
+          const ry = model.rateIy(rk.k1);
+          const rate = (ex * rx + ey * ry) / r;
           if (rate < 0 && r <= -rate * step) {
             step = -r / rate;
             aim = true;
           }
+          // A small slip turns fast: at most TURN_MAX radians of turn per step (the error
+          // estimate is blind to a turn much faster than the step).
+          const turn = Math.abs(rx * ey - ry * ex) / r;
+          if (turn * step > TURN_MAX * r) step = TURN_MAX * r / turn;
         } else {
           model.refIx = model.hintIx;
           model.refIy = model.hintIy;
@@ -193,11 +201,17 @@ export class CushionSolver {
         if (r > model.epsSlip) {
           model.refCx = ex / r;
           model.refCy = ey / r;
-          const rate = (ex * model.rateCx(rk.k1) + ey * model.rateCy(rk.k1)) / r;
+          const rx = model.rateCx(rk.k1);
+          const ry = model.rateCy(rk.k1);
+          const rate = (ex * rx + ey * ry) / r;
           if (rate < 0 && r <= -rate * step) {
             step = -r / rate;
             aim = true;
           }
+          // A small slip turns fast: at most TURN_MAX radians of turn per step (the error
+          // estimate is blind to a turn much faster than the step).
+          const turn = Math.abs(rx * ey - ry * ex) / r;
+          if (turn * step > TURN_MAX * r) step = TURN_MAX * r / turn;
         } else {
           model.refCx = model.hintCx;
           model.refCy = model.hintCy;
