@@ -46,6 +46,24 @@ export const PRESS_SPEED = 0.01;
 /** Events per ball beyond which the loop is broken, with an error, never a silent answer. */
 const EVENTS_PER_BALL_LIMIT = 2000;
 
+/** The bounding boxes of a table's cushions and pockets, built once per table. */
+const BOXES = new Map<TableSpec, { cushions: Float64Array[]; pockets: Float64Array[] }>();
+function tableBoxes(table: TableSpec): { cushions: Float64Array[]; pockets: Float64Array[] } {
+  let boxes = BOXES.get(table);
+  if (!boxes) {
+    boxes = {
+      cushions: table.cushions.map((c) =>
+        c.kind === 'segment'
+          ? new Float64Array([Math.min(c.ax, c.bx), Math.min(c.ay, c.by), Math.max(c.ax, c.bx), Math.max(c.ay, c.by)])
+          : new Float64Array([c.cx - c.r, c.cy - c.r, c.cx + c.r, c.cy + c.r]),
+      ),
+      pockets: table.pockets.map((p) => new Float64Array([p.x - p.r, p.y - p.r, p.x + p.r, p.y + p.r])),
+    };
+    BOXES.set(table, boxes);
+  }
+  return boxes;
+}
+
 /** Sets a ball's velocity along n to vn and its spin about t = (n_y, -n_x) to wt. */
 function lockNormal(s: BallSample, nx: number, ny: number, vn: number, wt: number): void {
   const dv = vn - (s.vx * nx + s.vy * ny);
@@ -130,11 +148,9 @@ class Simulation {
     this.paths = this.balls.map(() => ({ x: 0, y: 0, vx: 0, vy: 0, ax: 0, ay: 0 }));
     this.pathTime = this.balls.map(() => Number.NaN);
     this.pathVersion = this.balls.map(() => -1);
-    this.cushionBoxes = table.cushions.map((c) => {
-      if (c.kind === 'segment') return new Float64Array([Math.min(c.ax, c.bx), Math.min(c.ay, c.by), Math.max(c.ax, c.bx), Math.max(c.ay, c.by)]);
-      return new Float64Array([c.cx - c.r, c.cy - c.r, c.cx + c.r, c.cy + c.r]);
-    });
-    this.pocketBoxes = table.pockets.map((p) => new Float64Array([p.x - p.r, p.y - p.r, p.x + p.r, p.y + p.r]));
+    const boxes = tableBoxes(table);
+    this.cushionBoxes = boxes.cushions;
+    this.pocketBoxes = boxes.pockets;
   }
 
   private record(b: BallState): void {
