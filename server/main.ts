@@ -10,7 +10,6 @@ async function main(): Promise<void> {
       ? `database ${config.dbPath}: applied ${server.migrationsApplied.join(', ')}; schema ${server.schema}`
       : `database ${config.dbPath}: schema ${server.schema}, up to date`,
   );
-  console.log(`listening on ${server.url}`);
   const stop = (signal: string) => {
     console.log(`${signal} received, stopping`);
     server.close().then(
@@ -26,6 +25,8 @@ async function main(): Promise<void> {
   };
   process.once('SIGINT', () => stop('SIGINT'));
   process.once('SIGTERM', () => stop('SIGTERM'));
+  // Last: whoever waits for this line may signal at once, and the handlers are in place.
+  console.log(`listening on ${server.url}`);
 }
 
 main().catch((err: unknown) => {
