@@ -1,5 +1,6 @@
 // The browser client's entry point: today the lobby's status line and the table view.
 import { tableSpec } from '../shared/physics/index.ts';
+import { mountReplay } from './replay-view.ts';
 import { drawTable } from './table-view.ts';
 
 interface Health {
@@ -25,3 +26,12 @@ const status = document.getElementById('server-status');
 if (status) void showServerStatus(status);
 const canvas = document.getElementById('table');
 if (canvas instanceof HTMLCanvasElement) drawTable(canvas, tableSpec('pool-9ft'));
+const replay = {
+  select: document.getElementById('replay-case'),
+  button: document.getElementById('replay-play'),
+  canvas: document.getElementById('replay-table'),
+  info: document.getElementById('replay-info'),
+};
+if (replay.select instanceof HTMLSelectElement && replay.button instanceof HTMLButtonElement && replay.canvas instanceof HTMLCanvasElement && replay.info) {
+  mountReplay(replay.select, replay.button, replay.canvas, replay.info);
+}

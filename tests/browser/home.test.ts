@@ -1,6 +1,8 @@
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { Browser } from 'playwright-core';
+import { simulate } from '../../shared/physics/index.ts';
+import { CORPUS } from '../../shared/scenes/index.ts';
 import { chromiumAvailable, launchChromium } from '../support/browser.ts';
 import { startServerProcess, tempDir, type ServerProcess } from '../support/server-process.ts';
 
@@ -35,4 +37,22 @@ describe.skipIf(!chromiumAvailable())('the home page in Chromium', () => {
     expect(errors).toEqual([]);
     await page.close();
   });
+
+  it('replays a corpus shot in the browser with the same hash as the server computes', async () => {
+    const page = await browser.newPage();
+    const errors: string[] = [];
+    page.on('pageerror', (err) => errors.push(err.message));
+    await page.goto(`${server.url}/`);
+    const index = CORPUS.findIndex((c) => c.name === 'snooker black into the corner');
+    const c = CORPUS[index]!;
+    await page.selectOption('#replay-case', String(index));
+    await page.click('#replay-play');
+    const info = page.locator('#replay-info');
+    await expect.poll(() => info.getAttribute('data-done'), { timeout: 20_000 }).toBe('true');
+    expect(await info.getAttribute('data-hash')).toBe(simulate(c.scene, c.shot).hash);
+    expect(await info.textContent()).toContain('snooker black into the corner');
+    expect(errors).toEqual([]);
+    await page.close();
+  });
 });
+
