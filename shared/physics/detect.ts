@@ -3,7 +3,7 @@
 // polynomial in τ: a quadratic for a straight cushion, a quartic for a ball, an arc or a pocket
 // (the squared distance between two parabolas). Roots come from roots.ts, which cannot skip one.
 import type { Arc, Pocket, Segment } from './table-geometry.ts';
-import { firstEntry } from './roots.ts';
+import { firstEntry, rootsIn } from './roots.ts';
 
 /** A path relative to now: position, velocity and constant acceleration. */
 export interface Path {
@@ -77,12 +77,27 @@ export function segmentTime(p: Path, s: Segment, R: number, H: number, tol: numb
   c[2] = -0.5 * (s.nx * p.ax + s.ny * p.ay);
   c[3] = 0;
   c[4] = 0;
-  const t = nextContact(c, H, tol, 1);
-  if (t === Infinity) return t;
+  const c0 = c[0]!;
+  const t = c0 > 0 || onSegment(p, s, 0) ? nextContact(c, H, tol, 1) : -1;
+  if (t === Infinity || (t >= 0 && onSegment(p, s, t))) return t;
+  c[0] = c0; // nextContact may have moved it
+  // The line was crossed beside the segment (a ball in a pocket's mouth is behind the rail's line):
+  // walk the crossings for the first that enters the gap within the segment.
+  for (const r of rootsIn(c, 0, H)) if (entering(c, r) && onSegment(p, s, r)) return r;
+  return Infinity;
+}
+
+/** Whether the ball's centre at time t projects onto the segment. */
+function onSegment(p: Path, s: Segment, t: number): boolean {
   const ex = s.bx - s.ax;
   const ey = s.by - s.ay;
   const along = ((xAt(p, t) - s.ax) * ex + (yAt(p, t) - s.ay) * ey) / (ex * ex + ey * ey);
-  return along >= 0 && along <= 1 ? t : Infinity;
+  return along >= 0 && along <= 1;
+}
+
+/** Whether the gap polynomial closes at its root r (it falls through zero there). */
+function entering(c: Float64Array, r: number): boolean {
+  return c[1]! + r * (2 * c[2]! + r * (3 * c[3]! + r * 4 * c[4]!)) < 0;
 }
 
 /** Whether the direction (dx, dy) from an arc's centre lies within its span. */
@@ -91,12 +106,20 @@ export function inArcSpan(arc: Arc, dx: number, dy: number): boolean {
   return arc.ux * dy - arc.uy * dx >= 0 && dx * arc.wy - dy * arc.wx >= 0;
 }
 
-/** A ball meets a rounded jaw (or a point, r = 0) when its centre is R + r from the arc's centre. */
 export function arcTime(p: Path, arc: Arc, R: number, H: number, tol: number): number {
   const c = distanceQuartic(p.x - arc.cx, p.y - arc.cy, p.vx, p.vy, p.ax, p.ay, R + arc.r);
-  const t = nextContact(c, H, tol, 2 * (R + arc.r));
-  if (t === Infinity) return t;
-  return inArcSpan(arc, xAt(p, t) - arc.cx, yAt(p, t) - arc.cy) ? t : Infinity;
+  const c0 = c[0]!;
+  const t = c0 > 0 || onArc(p, arc, 0) ? nextContact(c, H, tol, 2 * (R + arc.r)) : -1;
+  if (t === Infinity || (t >= 0 && onArc(p, arc, t))) return t;
+  // Inside the arc's circle but beside its span (that part of the circle is in a pocket's mouth or
+  // inside the cushion): the first crossing that enters within the span counts.
+  c[0] = c0; // nextContact may have moved it
+  for (const r of rootsIn(c, 0, H)) if (entering(c, r) && onArc(p, arc, r)) return r;
+  return Infinity;
+}
+
+function onArc(p: Path, arc: Arc, t: number): boolean {
+  return inArcSpan(arc, xAt(p, t) - arc.cx, yAt(p, t) - arc.cy);
 }
 
 /** A ball drops when its centre enters the pocket's drop circle. */
