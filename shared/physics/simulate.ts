@@ -193,7 +193,8 @@ class Simulation {
       for (let i = 0; i < cushions.length; i++) {
         if (!boxesOverlap(box, this.cushionBoxes[i]!)) continue;
         const c = cushions[i]!;
-        const tau = c.kind === 'segment' ? segmentTime(p, c, this.R, H, this.rootTol) : arcTime(p, c, this.R, H, this.rootTol);
+        // Searched only up to the earliest event found so far: nothing later can win.
+        const tau = c.kind === 'segment' ? segmentTime(p, c, this.R, best, this.rootTol) : arcTime(p, c, this.R, best, this.rootTol);
         if (tau < best || (tau === best && kind === Kind.Cushion && i < target)) {
           best = tau;
           kind = Kind.Cushion;
@@ -204,7 +205,7 @@ class Simulation {
       const pockets = this.table.pockets;
       for (let i = 0; i < pockets.length; i++) {
         if (!boxesOverlap(pocketBox, this.pocketBoxes[i]!)) continue;
-        const tau = pocketTime(p, pockets[i]!, H, this.rootTol);
+        const tau = pocketTime(p, pockets[i]!, best, this.rootTol);
         if (tau <= best) {
           best = tau;
           kind = Kind.Pocket;
