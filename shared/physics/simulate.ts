@@ -82,6 +82,8 @@ class Simulation {
   readonly elasticParams: BallBallParams;
   readonly plasticParams: BallBallParams;
   private readonly lastImpact: number[];
+  /** When each ball's own next event (motion change, cushion, pocket) is due; Infinity at rest. */
+  private readonly nextOwn: number[];
   /** Impacts of each ball at the instant of its last impact. */
   private readonly impactsNow: number[];
   /** When each ball was last in a pressed contact (see onBall). */
@@ -111,6 +113,7 @@ class Simulation {
     this.elasticParams = { ...this.ballParams, restitution: 1 };
     this.plasticParams = { ...this.ballParams, restitution: 0 };
     this.lastImpact = scene.balls.map(() => -Infinity);
+    this.nextOwn = scene.balls.map(() => Infinity);
     this.impactsNow = scene.balls.map(() => 0);
     this.lastPress = scene.balls.map(() => -Infinity);
     this.cushionParams = {
@@ -181,6 +184,7 @@ class Simulation {
 
   /** Predicts b's own next event: a change of motion, a cushion or a pocket. */
   private predictOwn(b: BallState, t: number): void {
+    this.nextOwn[b.index] = Infinity;
     if (b.motion === 'rest' || b.motion === 'pocketed') return;
     let best = b.tEnd - t;
     let kind: Kind = Kind.Motion;
@@ -213,6 +217,7 @@ class Simulation {
         }
       }
     }
+    this.nextOwn[b.index] = t + best;
     this.queue.push({ t: t + best, kind, a: b.index, b: target, versionA: b.version, versionB: 0 });
   }
 
@@ -222,7 +227,8 @@ class Simulation {
     const mb = this.translating(b);
     if (!ma && !mb) return;
     if (a.motion === 'pocketed' || b.motion === 'pocketed') return;
-    const H = Math.min(ma ? a.tEnd : Infinity, mb ? b.tEnd : Infinity) - t;
+    // Not past either ball's own next event: there its path changes and the pair is predicted again.
+    const H = Math.min(this.nextOwn[a.index]!, this.nextOwn[b.index]!) - t;
     if (!(H >= 0)) return;
     const pa = this.pathOf(a, t);
     const pb = this.pathOf(b, t);
