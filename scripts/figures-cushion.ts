@@ -20,9 +20,9 @@ function reboundSeries(kT: number, kS: number, name: string, color: string): { s
   return { speed: { name, points: speed, color }, angle: { name, points: angle, color } };
 }
 
-function reboundFigure(title: string, caption: string, lines: { speed: Series; angle: Series }[], angleMax = 90): string {
+function reboundFigure(title: string, caption: string, lines: { speed: Series; angle: Series }[], angleMax = 90, speedRange: [number, number] = [0.55, 1.15]): string {
   return figureSvg(title, caption, [
-    { title: 'Rebound speed', xLabel: 'incidence α (°)', yLabel: 'rebound speed (m/s)', series: lines.map((l) => l.speed), x: [0, 90], legend: 'bl' },
+    { title: 'Rebound speed', xLabel: 'incidence α (°)', yLabel: 'rebound speed (m/s)', series: lines.map((l) => l.speed), x: [0, 90], y: speedRange, legend: 'bl' },
     { title: 'Rebound angle', xLabel: 'incidence α (°)', yLabel: 'rebound angle β (°, from the cushion)', series: lines.map((l) => l.angle), x: [0, 90], y: [0, angleMax], legend: 'tl' },
   ]);
 }
