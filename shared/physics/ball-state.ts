@@ -37,3 +37,15 @@ export interface BallSample {
   wy: number;
   wz: number;
 }
+
+/** Copies position, velocity and spin from one sample (or ball) into another. */
+export function copySample(from: BallSample, to: BallSample): BallSample {
+  to.x = from.x;
+  to.y = from.y;
+  to.vx = from.vx;
+  to.vy = from.vy;
+  to.wx = from.wx;
+  to.wy = from.wy;
+  to.wz = from.wz;
+  return to;
+}

@@ -9,7 +9,7 @@
 // Rolling: u = 0, v decelerates at μ_r g along v̂ for |v| / (μ_r g); ω follows v (ω_x = -v_y/R,
 // ω_y = v_x/R). Spin about z decays at a constant rate α in every state (it does not move the
 // ball on the cloth) and ends at |ω_z| / α; a ball whose only motion is ω_z is spinning.
-import type { BallSample, BallState, Motion } from './ball-state.ts';
+import { copySample, type BallSample, type BallState, type Motion } from './ball-state.ts';
 
 export interface ClothParams {
   /** Ball radius (m). */
@@ -133,13 +133,7 @@ export function emptySample(): BallSample {
 export function startSegment(b: BallState, t: number, s: BallSample, p: ClothParams): void {
   b.motion = settle(s, p);
   b.t0 = t;
-  b.x = s.x;
-  b.y = s.y;
-  b.vx = s.vx;
-  b.vy = s.vy;
-  b.wx = s.wx;
-  b.wy = s.wy;
-  b.wz = s.wz;
+  copySample(s, b);
   const a = acceleration(b, p);
   b.ax = a.ax;
   b.ay = a.ay;

@@ -2,7 +2,7 @@
 // involved, and predicts again only for them (detect.ts says when, ball-collision.ts and the
 // cushion kernel say what, cloth-motion.ts moves the balls in between). Balls at rest cost nothing
 // and effort follows events: nothing steps with the clock.
-import type { BallSample, BallState, Motion } from './ball-state.ts';
+import { copySample, type BallSample, type BallState, type Motion } from './ball-state.ts';
 import { collideBalls, type BallBallParams } from './ball-collision.ts';
 import { accelerationAlong, emptySample, REST_SPEED, sampleAt, settle, startSegment, type ClothParams } from './cloth-motion.ts';
 import { cushionRebound } from './cushion.ts';
@@ -439,14 +439,7 @@ class Simulation {
 
   /** The acceleration along n that the cloth gives a ball in state s, as its next segment will move. */
   private normalAccel(s: BallSample, nx: number, ny: number): number {
-    const c = this.scratch;
-    c.x = s.x;
-    c.y = s.y;
-    c.vx = s.vx;
-    c.vy = s.vy;
-    c.wx = s.wx;
-    c.wy = s.wy;
-    c.wz = s.wz;
+    const c = copySample(s, this.scratch);
     return accelerationAlong(c, settle(c, this.cloth), nx, ny, this.cloth);
   }
 
