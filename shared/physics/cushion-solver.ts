@@ -178,17 +178,8 @@ export class CushionSolver {
         if (r > model.epsSlip) {
           model.refIx = ex / r;
           model.refIy = ey / r;
-          const rx = model.rateIx(rk.k1);
-          const ry = model.rateIy(rk.k1);
-          const rate = (ex * rx + ey * ry) / r;
-          if (rate < 0 && r <= -rate * step) {
-            step = -r / rate;
-            aim = true;
-          }
-          // A small slip turns fast: at most TURN_MAX radians of turn per step (the error
-          // estimate is blind to a turn much faster than the step).
-          const turn = Math.abs(rx * ey - ry * ex) / r;
-          if (turn * step > TURN_MAX * r) step = TURN_MAX * r / turn;
+          step = this.limitBySlip(ex, ey, r, model.rateIx(rk.k1), model.rateIy(rk.k1), step);
+          if (this.aimed) aim = true;
         } else {
           model.refIx = model.hintIx;
           model.refIy = model.hintIy;
@@ -201,17 +192,8 @@ export class CushionSolver {
         if (r > model.epsSlip) {
           model.refCx = ex / r;
           model.refCy = ey / r;
-          const rx = model.rateCx(rk.k1);
-          const ry = model.rateCy(rk.k1);
-          const rate = (ex * rx + ey * ry) / r;
-          if (rate < 0 && r <= -rate * step) {
-            step = -r / rate;
-            aim = true;
-          }
-          // A small slip turns fast: at most TURN_MAX radians of turn per step (the error
-          // estimate is blind to a turn much faster than the step).
-          const turn = Math.abs(rx * ey - ry * ex) / r;
-          if (turn * step > TURN_MAX * r) step = TURN_MAX * r / turn;
+          step = this.limitBySlip(ex, ey, r, model.rateCx(rk.k1), model.rateCy(rk.k1), step);
+          if (this.aimed) aim = true;
         } else {
           model.refCx = model.hintCx;
           model.refCy = model.hintCy;
@@ -534,6 +516,27 @@ export class CushionSolver {
   }
 
   /** |effective slip| of contact 0 (I) or 1 (C) at the current state. */
+  /** Set by limitBySlip when it shortened the step to land on the slip's zero. */
+  private aimed = false;
+
+  /**
+   * The step shortened so that a sliding slip (ex, ey), |slip| = r, changing at (rx, ry) per unit
+   * impulse neither passes zero (the step then aims at the zero: aimed) nor turns more than
+   * TURN_MAX radians (a small slip turns fast, and the error estimate is blind to a turn much
+   * faster than the step).
+   */
+  private limitBySlip(ex: number, ey: number, r: number, rx: number, ry: number, step: number): number {
+    this.aimed = false;
+    const rate = (ex * rx + ey * ry) / r;
+    if (rate < 0 && r <= -rate * step) {
+      step = -r / rate;
+      this.aimed = true;
+    }
+    const turn = Math.abs(rx * ey - ry * ex) / r;
+    if (turn * step > TURN_MAX * r) step = TURN_MAX * r / turn;
+    return step;
+  }
+
   private slipNorm(contact: number): number {
     const m = this.model;
     const y = this.y;
