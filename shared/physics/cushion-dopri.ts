@@ -6,43 +6,11 @@
 // solution is propagated (local extrapolation); the difference with the 4th-order one is the
 // error estimate. The last stage is evaluated at the step's end (FSAL): 6 evaluations a step.
 import type { CushionModel } from './cushion-model.ts';
+import {
+  A21, A31, A32, A41, A42, A43, A51, A52, A53, A54, A61, A62, A63, A64, A65, B1, B3, B4, B5, B6, E1, E3, E4, E5, E6, E7, D1, D3, D4, D5, D6, D7,
+} from './cushion-tableau.ts';
 
 export const DIM = 6;
-
-const A21 = 1 / 5;
-const A31 = 3 / 40;
-const A32 = 9 / 40;
-const A41 = 44 / 45;
-const A42 = -56 / 15;
-const A43 = 32 / 9;
-const A51 = 19372 / 6561;
-const A52 = -25360 / 2187;
-const A53 = 64448 / 6561;
-const A54 = -212 / 729;
-const A61 = 9017 / 3168;
-const A62 = -355 / 33;
-const A63 = 46732 / 5247;
-const A64 = 49 / 176;
-const A65 = -5103 / 18656;
-const B1 = 35 / 384;
-const B3 = 500 / 1113;
-const B4 = 125 / 192;
-const B5 = -2187 / 6784;
-const B6 = 11 / 84;
-// 5th-order minus 4th-order weights.
-const E1 = 71 / 57600;
-const E3 = -71 / 16695;
-const E4 = 71 / 1920;
-const E5 = -17253 / 339200;
-const E6 = 22 / 525;
-const E7 = -1 / 40;
-// Continuous extension.
-const D1 = -12715105075 / 11282082432;
-const D3 = 87487479700 / 32700410799;
-const D4 = -10690763975 / 1880347072;
-const D5 = 701980252875 / 199316789632;
-const D6 = -1453857185 / 822651844;
-const D7 = 69997945 / 29380423;
 
 export class Dopri5 {
   /** Derivative at the step's start; after an accepted step swap() makes k7 the new k1. */

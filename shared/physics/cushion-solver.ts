@@ -12,35 +12,16 @@
 //    cushion-types.ts): ends there with vy = 0.
 // Only + - * / and Math.sqrt. A step count cap throws: it never returns a wrong answer.
 import { Dopri5, DIM } from './cushion-dopri.ts';
+import { FAST_END, FAST_SETTLE, fastSteps } from './cushion-fast.ts';
+import type { FastHost } from './cushion-fast.ts';
 import { CushionModel, SLIDE, STICK } from './cushion-model.ts';
 import type { CushionOutcome } from './cushion-types.ts';
+import {
+  EVENT_FRACTION, HINT_FRACTION, invRoot, MAX_STEPS, piFactor, QS_EXIT, QS_FRACTION, QS_RHO, TURN_MAX, ZERO_FRACTION,
+} from './cushion-control.ts';
 
-/** Steps (accepted or rejected) after which the solver gives up with an Error. */
-export const MAX_STEPS = 20000;
-/**
- * A falling slip below this fraction of the step tolerance counts as zero (slip-zero event).
- * Declaring a slip zero early by e changes the result by O(e): the true solution would slide
- * on for dp = e / |rate|, with a friction that differs from the rolling one by O(|rate|).
- */
-const EVENT_FRACTION = 0.1;
-/** An initial slip below this fraction of the speed counts as exactly zero. */
-const ZERO_FRACTION = 1e-13;
-/** Slip below this fraction of the speed: a slipping contact uses its onset direction. */
-const HINT_FRACTION = 1e-14;
-/**
- * Quasi-static slip (see CushionModel.qsI). A slip below QS_RHO × speed whose direction u is
- * within δ of the slaved direction u*, with δ × slip <= QS_FRACTION × tolerance × speed, is
- * slaved from then on (the neglected part of its motion is O(δ × slip)); a slaved slip that
- * grows beyond QS_EXIT × speed follows its own direction again.
- */
-const QS_RHO = 1e-2;
-const QS_FRACTION = 0.1;
-const QS_EXIT = 1e-5;
-/** Largest turn of a slip direction in one step (radians), predicted from its rate. */
-const TURN_MAX = 0.5;
+export { MAX_STEPS } from './cushion-control.ts';
 
-const COMPRESSION = 0;
-const RESTITUTION = 1;
 
 // Event functions on the continuous extension, signed so that > 0 is before the event.
 const EV_VY = 0;
@@ -68,23 +49,36 @@ export interface CushionTracePoint {
   readonly stickC: boolean;
 }
 
-export class CushionSolver {
-  private readonly model = new CushionModel();
+export class CushionSolver implements FastHost {
+  readonly model = new CushionModel();
   private readonly rk = new Dopri5();
   /** Current state (then the result) in internal variables [vx, vy, R wx, R wy, R wz, W]. */
   readonly y = new Float64Array(DIM);
   private readonly ye = new Float64Array(DIM);
   private readonly kd = new Float64Array(DIM);
   private readonly atol = new Float64Array(DIM);
-  private p = -0;
-  private phase = COMPRESSION;
-  private wEnd = -0;
-  private epsEv = -0;
+  p = -0;
+  /** False during compression, true during restitution. */
+  restitution = false;
+  wEnd = -0;
+  epsEv = -0;
+  atolV = -0;
+  atolW = -0;
+  ee2 = -0;
+  /** Step control, shared with the inner loop (cushion-fast.ts): see FastHost. */
+  step = -0;
+  errPrev = -0;
+  lastErr = -0;
+  rI0 = -0;
+  rC0 = -0;
+  /** Whether the inner loop for two slipping contacts is used (off only to test it). */
+  fastLoop = true;
+  innerSteps = 0;
   /** Set by slavedStart: bit 0 (I) and bit 1 (C) for a slaved slip that is zero now. */
   private zeroNow = 0;
   private M = 1.5;
   private R = 1.5;
-  private V = 1.5;
+  V = 1.5;
   /** How the last impact ended. */
   outcome: CushionOutcome = 'restitution';
   /** Steps taken (accepted and rejected) by the last impact. */
@@ -124,15 +118,19 @@ export class CushionSolver {
     for (let i = 0; i < 5; i++) atol[i] = at;
     // The end is where W meets its target: an error dW moves it by dW / (c |vy|).
     atol[5] = at * c * vy;
+    this.atolV = at;
+    this.atolW = atol[5]!;
     this.epsEv = EVENT_FRACTION * at;
     model.epsSlip = HINT_FRACTION * V;
     this.p = 0;
-    this.phase = COMPRESSION;
+    this.restitution = false;
     this.wEnd = 0;
     this.steps = 0;
+    this.innerSteps = 0;
     this.rejected = 0;
     this.outcome = 'restitution';
     const ee2 = ee * ee;
+    this.ee2 = ee2;
 
     // A slip that is zero at the start (e.g. a ball rolling on the cloth).
     const eps0 = ZERO_FRACTION * V;
@@ -148,6 +146,22 @@ export class CushionSolver {
     let step = 0.25 * vy / c;
     let errPrev = 1;
     for (;;) {
+      if (this.fastLoop && this.trace === null && model.modeI === SLIDE && model.modeC === SLIDE &&
+        !model.qsI && !model.qsC) {
+        // Both contacts slip: the inner loop takes the same steps faster (cushion-fast.ts).
+        this.step = step;
+        this.errPrev = errPrev;
+        const code = fastSteps(this, y, rk.k1);
+        step = this.step;
+        errPrev = this.errPrev;
+        if (code === FAST_END) return;
+        if (code === FAST_SETTLE) {
+          if (this.settleSlips(this.rI0, this.rC0, tolV)) return;
+          step *= Math.min(5, Math.max(0.2, 0.9 * piFactor(this.lastErr, errPrev)));
+          errPrev = this.lastErr > 1e-4 ? this.lastErr : 1e-4;
+          continue;
+        }
+      }
       if (++this.steps > MAX_STEPS) {
         throw new Error(
           `cushionRebound: no end after ${MAX_STEPS} steps (P = ${this.p * M} N s, state ${Array.from(y).join(', ')})`,
@@ -239,7 +253,7 @@ export class CushionSolver {
       const ys = this.ye;
       if (stop < 1) rk.denseAll(stop, ys);
       else copy6(rk.y1, ys);
-      if (this.phase === COMPRESSION && ys[1]! <= 0) {
+      if (!this.restitution && ys[1]! <= 0) {
         if (!dense) {
           rk.prepareDense(y);
           dense = true;
@@ -248,7 +262,7 @@ export class CushionSolver {
         rk.denseAll(from, this.ye);
         const wc = this.ye[5]!;
         this.wEnd = wc - ee2 * wc;
-        this.phase = RESTITUTION;
+        this.restitution = true;
         if (this.slipAtZero(this.ye)) {
           // A slip reaches zero together with vy (e.g. head-on with one contact rolling): stop
           // the step here and let the rolling conditions decide before restitution starts.
@@ -278,7 +292,7 @@ export class CushionSolver {
         if (stop < 1) rk.denseAll(stop, ys);
         else copy6(rk.y1, ys);
       }
-      if (endAt < 0 && this.phase === RESTITUTION) {
+      if (endAt < 0 && this.restitution) {
         if (ys[5]! <= this.wEnd) {
           if (!dense) {
             rk.prepareDense(y);
@@ -320,33 +334,43 @@ export class CushionSolver {
         if (!dense) rk.prepareDense(y);
         this.recordTrace(step, 1);
       }
-      // Slip-zero event: a slipping contact's slip fell (nearly) to zero.
-      const slideI = model.modeI === SLIDE;
-      const slideC = model.modeC === SLIDE;
-      const rI0 = slideI ? this.slipNorm(0) : 0;
-      const rC0 = slideC ? this.slipNorm(1) : 0;
+      const rI0 = model.modeI === SLIDE ? this.slipNorm(0) : 0;
+      const rC0 = model.modeC === SLIDE ? this.slipNorm(1) : 0;
       copy6(rk.y1, y);
       rk.swap();
       this.p += step;
-      const rI1 = slideI ? this.slipNorm(0) : 0;
-      const rC1 = slideC ? this.slipNorm(1) : 0;
-      const zI = slideI && rI1 <= this.epsEv && (rI1 < rI0 || model.minDotI < 0);
-      const zC = slideC && rC1 <= this.epsEv && (rC1 < rC0 || model.minDotC < 0);
-      if (zI || zC) {
-        if (this.enterZero(zI, zC)) {
-          this.finishStalled();
-          return;
-        }
-        model.derivative(y, rk.k1);
-      } else if (this.slaveSmallSlips(tolV)) {
-        model.derivative(y, rk.k1);
-      }
+      if (this.settleSlips(rI0, rC0, tolV)) return;
       // PI control (Gustafsson): err^(-0.125) × errPrev^(0.0625), roughly the usual
       // err^(-0.7/5) × errPrev^(0.4/5) with square roots only; damps the growth after a step
       // that went well just before a hard region.
       step *= Math.min(5, Math.max(0.2, 0.9 * piFactor(err, errPrev)));
       errPrev = err > 1e-4 ? err : 1e-4;
     }
+  }
+
+  /**
+   * After an accepted step (y and rk.k1 at its end; rI0, rC0 the slip speeds at its start):
+   * a slipping contact whose slip fell (nearly) to zero goes through the rolling conditions,
+   * and a small slip may become slaved. True when the impact ended (both contacts roll).
+   */
+  private settleSlips(rI0: number, rC0: number, tolV: number): boolean {
+    const model = this.model;
+    const slideI = model.modeI === SLIDE;
+    const slideC = model.modeC === SLIDE;
+    const rI1 = slideI ? this.slipNorm(0) : 0;
+    const rC1 = slideC ? this.slipNorm(1) : 0;
+    const zI = slideI && rI1 <= this.epsEv && (rI1 < rI0 || model.minDotI < 0);
+    const zC = slideC && rC1 <= this.epsEv && (rC1 < rC0 || model.minDotC < 0);
+    if (zI || zC) {
+      if (this.enterZero(zI, zC)) {
+        this.finishStalled();
+        return true;
+      }
+      model.derivative(this.y, this.rk.k1);
+    } else if (this.slaveSmallSlips(tolV)) {
+      model.derivative(this.y, this.rk.k1);
+    }
+    return false;
   }
 
   /** The result as a plain state (rad/s for the spins). */
@@ -684,19 +708,4 @@ function copy6(from: Float64Array, to: Float64Array): void {
   to[3] = from[3]!;
   to[4] = from[4]!;
   to[5] = from[5]!;
-}
-
-/** err^(-1/8) × prev^(1/16) with square roots. */
-function piFactor(err: number, prev: number): number {
-  if (!(err > 1e-30)) return 1e6;
-  const q = Math.sqrt(Math.sqrt(Math.sqrt(Math.sqrt(err))));
-  const qp = Math.sqrt(Math.sqrt(Math.sqrt(Math.sqrt(prev))));
-  return qp / (q * q);
-}
-
-/** err^(-3/16) with four square roots: the step-size factor (the optimal exponent is 1/5). */
-function invRoot(err: number): number {
-  if (!(err > 1e-30)) return 1e6;
-  const q = Math.sqrt(Math.sqrt(Math.sqrt(Math.sqrt(err))));
-  return 1 / (q * q * q);
 }

@@ -1,0 +1,42 @@
+// The constants of the cushion solver's step and event control, and its step-size factors,
+// shared by the general solver (cushion-solver.ts) and its scalar fast path (cushion-fast.ts)
+// so that both take the same steps. docs/cushion.md explains each choice.
+
+/** Steps (accepted or rejected) after which the solver gives up with an Error. */
+export const MAX_STEPS = 20000;
+/**
+ * A falling slip below this fraction of the step tolerance counts as zero (slip-zero event).
+ * Declaring a slip zero early by e changes the result by O(e): the true solution would slide
+ * on for dp = e / |rate|, with a friction that differs from the rolling one by O(|rate|).
+ */
+export const EVENT_FRACTION = 0.1;
+/** An initial slip below this fraction of the speed counts as exactly zero. */
+export const ZERO_FRACTION = 1e-13;
+/** Slip below this fraction of the speed: a slipping contact uses its onset direction. */
+export const HINT_FRACTION = 1e-14;
+/**
+ * Quasi-static slip (see CushionModel.qsI). A slip below QS_RHO × speed whose direction u is
+ * within δ of the slaved direction u*, with δ × slip <= QS_FRACTION × tolerance × speed, is
+ * slaved from then on (the neglected part of its motion is O(δ × slip)); a slaved slip that
+ * grows beyond QS_EXIT × speed follows its own direction again.
+ */
+export const QS_RHO = 1e-2;
+export const QS_FRACTION = 0.1;
+export const QS_EXIT = 1e-5;
+/** Largest turn of a slip direction in one step (radians), predicted from its rate. */
+export const TURN_MAX = 0.5;
+
+/** err^(-1/8) × prev^(1/16) with square roots. */
+export function piFactor(err: number, prev: number): number {
+  if (!(err > 1e-30)) return 1e6;
+  const q = Math.sqrt(Math.sqrt(Math.sqrt(Math.sqrt(err))));
+  const qp = Math.sqrt(Math.sqrt(Math.sqrt(Math.sqrt(prev))));
+  return qp / (q * q);
+}
+
+/** err^(-3/16) with four square roots: the step-size factor (the optimal exponent is 1/5). */
+export function invRoot(err: number): number {
+  if (!(err > 1e-30)) return 1e6;
+  const q = Math.sqrt(Math.sqrt(Math.sqrt(Math.sqrt(err))));
+  return 1 / (q * q * q);
+}

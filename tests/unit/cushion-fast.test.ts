@@ -1,0 +1,83 @@
+// The cushion solver's inner loop for two slipping contacts (shared/physics/cushion-fast.ts)
+// must take exactly the steps of the general loop: the same result bits, step counts, rejected
+// steps and outcome, with it and without it, on the benchmark grid at every tolerance with the
+// paper's and each table's constants, and on random impacts over wide constants.
+import fc from 'fast-check';
+import { describe, expect, it } from 'vitest';
+import { CushionSolver } from '../../shared/physics/cushion-solver.ts';
+import type { CushionParams, CushionState } from '../../shared/physics/index.ts';
+import { benchGrid, PAPER, paperState, TABLE_PARAMS } from '../support/cushion-cases.ts';
+
+const withLoop = new CushionSolver();
+const general = new CushionSolver();
+general.fastLoop = false;
+
+interface Run {
+  readonly bits: readonly number[];
+  readonly steps: number;
+  readonly rejected: number;
+  readonly outcome: string;
+  readonly inner: number;
+}
+
+function solve(solver: CushionSolver, s: CushionState, p: CushionParams, tol: number): Run {
+  solver.solve(s.vx, s.vy, s.wx, s.wy, s.wz, p.M, p.R, p.h, p.ee, p.muS, p.muW, tol);
+  const r = solver.result();
+  return {
+    bits: [r.vx, r.vy, r.wx, r.wy, r.wz],
+    steps: solver.steps,
+    rejected: solver.rejected,
+    outcome: solver.outcome,
+    inner: solver.innerSteps,
+  };
+}
+
+/** Compares both ways of solving; returns the inner loop's share of the steps. */
+function same(s: CushionState, p: CushionParams, tol: number): number {
+  const a = solve(withLoop, s, p, tol);
+  const b = solve(general, s, p, tol);
+  expect(b.inner).toBe(0);
+  // Object.is tells -0 from 0 and compares NaN: bit-level equality for finite numbers.
+  a.bits.forEach((x, i) => expect(Object.is(x, b.bits[i]), `component ${i}: ${x} vs ${b.bits[i]}`).toBe(true));
+  expect([a.steps, a.rejected, a.outcome]).toEqual([b.steps, b.rejected, b.outcome]);
+  return a.inner;
+}
+
+describe('inner loop for two slipping contacts', () => {
+  it('gives the general loop\'s bits on the benchmark grid, every setting and set of constants', () => {
+    let inner = 0;
+    let steps = 0;
+    for (const tol of [1e-4, 1e-5, 1e-6, 1e-8]) {
+      for (const [, params] of TABLE_PARAMS) {
+        for (const g of benchGrid(params.R)) {
+          inner += same(g.state, params, tol);
+          steps += withLoop.steps;
+        }
+      }
+    }
+    // It does take most of the steps (otherwise this test would compare the general loop
+    // with itself).
+    expect(inner / steps).toBeGreaterThan(0.5);
+  });
+
+  it('gives the general loop\'s bits on random impacts with wide constants', () => {
+    fc.assert(
+      fc.property(
+        fc.double({ min: 0.01, max: 6, noNaN: true }),
+        fc.double({ min: 0.1, max: 90, noNaN: true }),
+        fc.double({ min: -3, max: 3, noNaN: true }),
+        fc.double({ min: -3, max: 3, noNaN: true }),
+        fc.double({ min: 0, max: 1, noNaN: true }),
+        fc.double({ min: 0, max: 1.5, noNaN: true }),
+        fc.double({ min: 0, max: 1.5, noNaN: true }),
+        fc.double({ min: 1.05, max: 1.95, noNaN: true }),
+        fc.constantFrom(1e-3, 1e-4, 1e-5, 1e-6, 1e-8),
+        (V0, alpha, kT, kS, ee, muS, muW, hR, tol) => {
+          const params = { M: PAPER.M, R: PAPER.R, h: hR * PAPER.R, ee, muS, muW };
+          same(paperState(V0, alpha, kT, kS, PAPER.R), params, tol);
+        },
+      ),
+      { numRuns: 3000 },
+    );
+  });
+});
