@@ -56,6 +56,9 @@ const K = new Float64Array(42);
 const Y0 = new Float64Array(6);
 const Y1 = new Float64Array(6);
 const Q = new Float64Array(30);
+// A state on the extension, and root's arguments (T[1..3]) and result (T[0]).
+const D = new Float64Array(6);
+const T = new Float64Array(4);
 
 /**
  * Runs the general loop's iterations while both contacts slip and no slip is slaved, from the
@@ -447,23 +450,32 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
     // Accepted: end of compression and the work target on the continuous extension.
     let endAt = -1;
     let from = 0;
-    let prepared = false;
-    if (!restitution && x1 <= 0) {
+    if ((!restitution && x1 <= 0) || (restitution && x5 <= wEnd)) {
+      // The continuous extension of this step (Dopri5.prepareDense), into Q.
+      Y0[0] = y0; Y0[1] = y1; Y0[2] = y2; Y0[3] = y3; Y0[4] = y4; Y0[5] = y5;
+      Y1[0] = x0; Y1[1] = x1; Y1[2] = x2; Y1[3] = x3; Y1[4] = x4; Y1[5] = x5;
       K[0] = a0; K[1] = a1; K[2] = a2; K[3] = a3; K[4] = a4; K[5] = a5;
       K[12] = c0; K[13] = c1; K[14] = c2; K[15] = c3; K[16] = c4; K[17] = c5;
       K[18] = d0; K[19] = d1; K[20] = d2; K[21] = d3; K[22] = d4; K[23] = d5;
       K[24] = e0; K[25] = e1; K[26] = e2; K[27] = e3; K[28] = e4; K[29] = e5;
       K[30] = f0; K[31] = f1; K[32] = f2; K[33] = f3; K[34] = f4; K[35] = f5;
       K[36] = g0; K[37] = g1; K[38] = g2; K[39] = g3; K[40] = g4; K[41] = g5;
-      prepareDense(h, y0, y1, y2, y3, y4, y5, x0, x1, x2, x3, x4, x5);
-      prepared = true;
-      from = root(1, 0, 0, 1);
-      const v0 = dense(from, 0);
-      const v1 = dense(from, 1);
-      const v2 = dense(from, 2);
-      const v3 = dense(from, 3);
-      const v4 = dense(from, 4);
-      const wc = dense(from, 5);
+      T[0] = h;
+      prepareDense();
+    }
+    if (!restitution && x1 <= 0) {
+      T[1] = 0;
+      T[2] = 1;
+      T[3] = 0;
+      root(1);
+      from = T[0]!;
+      denseAll(from);
+      const v0 = D[0]!;
+      const v1 = D[1]!;
+      const v2 = D[2]!;
+      const v3 = D[3]!;
+      const v4 = D[4]!;
+      const wc = D[5]!;
       // A slip at zero together with vy (CushionSolver.slipAtZero), or an impact that stalls:
       // the general loop takes this iteration again.
       const lim = 10 * epsEv;
@@ -497,16 +509,11 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
     }
     if (endAt < 0 && restitution) {
       if (x5 <= wEnd) {
-        if (!prepared) {
-          K[0] = a0; K[1] = a1; K[2] = a2; K[3] = a3; K[4] = a4; K[5] = a5;
-          K[12] = c0; K[13] = c1; K[14] = c2; K[15] = c3; K[16] = c4; K[17] = c5;
-          K[18] = d0; K[19] = d1; K[20] = d2; K[21] = d3; K[22] = d4; K[23] = d5;
-          K[24] = e0; K[25] = e1; K[26] = e2; K[27] = e3; K[28] = e4; K[29] = e5;
-          K[30] = f0; K[31] = f1; K[32] = f2; K[33] = f3; K[34] = f4; K[35] = f5;
-          K[36] = g0; K[37] = g1; K[38] = g2; K[39] = g3; K[40] = g4; K[41] = g5;
-          prepareDense(h, y0, y1, y2, y3, y4, y5, x0, x1, x2, x3, x4, x5);
-        }
-        endAt = root(5, wEnd, from, 1);
+        T[1] = from;
+        T[2] = 1;
+        T[3] = wEnd;
+        root(5);
+        endAt = T[0]!;
       } else if (x1 >= 0) {
         steps--; // vy came back to zero first: stalled
         break;
@@ -514,7 +521,8 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
     }
     if (endAt >= 0) {
       if (endAt < 1) {
-        for (let i = 0; i < 6; i++) y[i] = dense(endAt, i);
+        denseAll(endAt);
+        for (let i = 0; i < 6; i++) y[i] = D[i]!;
       } else {
         y[0] = x0;
         y[1] = x1;
@@ -596,26 +604,12 @@ function crossingFraction(d0: number, d1: number): number {
   return t < 0.01 ? 0.01 : t > 0.99 ? 0.99 : t;
 }
 
-/**
- * Dopri5.prepareDense: the continuous extension of the step of size h from (y0..y5) to
- * (n0..n5) with the stages in K, into Q.
- */
-function prepareDense(
-  h: number, y0: number, y1: number, y2: number, y3: number, y4: number, y5: number,
-  n0: number, n1: number, n2: number, n3: number, n4: number, n5: number,
-): void {
-  Y0[0] = y0;
-  Y0[1] = y1;
-  Y0[2] = y2;
-  Y0[3] = y3;
-  Y0[4] = y4;
-  Y0[5] = y5;
-  Y1[0] = n0;
-  Y1[1] = n1;
-  Y1[2] = n2;
-  Y1[3] = n3;
-  Y1[4] = n4;
-  Y1[5] = n5;
+// The helpers below take and return their numbers through typed arrays: a call V8 does not
+// inline would box every double argument and result.
+
+/** Dopri5.prepareDense for the step of size T[0] from Y0 to Y1 with the stages in K, into Q. */
+function prepareDense(): void {
+  const h = T[0]!;
   for (let i = 0; i < 6; i++) {
     const y = Y0[i]!;
     const dy = Y1[i]! - y;
@@ -631,27 +625,47 @@ function prepareDense(
   }
 }
 
-/** Variable i of the continuous extension at fraction theta of the step (Dopri5.denseAt). */
-function dense(theta: number, i: number): number {
+/** The continuous extension at fraction theta of the step, all variables, into D (Dopri5.denseAll). */
+function denseAll(theta: number): void {
   const t1 = 1 - theta;
-  const o = 5 * i;
-  return Q[o]! + theta * (Q[o + 1]! + t1 * (Q[o + 2]! + theta * (Q[o + 3]! + t1 * Q[o + 4]!)));
+  for (let i = 0; i < 6; i++) {
+    const o = 5 * i;
+    D[i] = Q[o]! + theta * (Q[o + 1]! + t1 * (Q[o + 2]! + theta * (Q[o + 3]! + t1 * Q[o + 4]!)));
+  }
 }
 
 /**
- * The first theta in [lo, hi] where variable i of the continuous extension falls to target
- * (CushionSolver.root: Illinois-modified regula falsi, the same iterations).
+ * The first theta in [T[1], T[2]] where variable i of the continuous extension falls to T[3],
+ * into T[0] (CushionSolver.root: Illinois-modified regula falsi, the same iterations).
  */
-function root(i: number, target: number, lo: number, hi: number): number {
-  let flo = dense(lo, i) - target;
-  if (!(flo > 0)) return lo;
-  let fhi = dense(hi, i) - target;
-  if (fhi > 0) return hi;
+function root(i: number): void {
+  const o = 5 * i;
+  const q0 = Q[o]!;
+  const q1 = Q[o + 1]!;
+  const q2 = Q[o + 2]!;
+  const q3 = Q[o + 3]!;
+  const q4 = Q[o + 4]!;
+  const target = T[3]!;
+  let lo = T[1]!;
+  let hi = T[2]!;
+  let t1 = 1 - lo;
+  let flo = q0 + lo * (q1 + t1 * (q2 + lo * (q3 + t1 * q4))) - target;
+  if (!(flo > 0)) {
+    T[0] = lo;
+    return;
+  }
+  t1 = 1 - hi;
+  let fhi = q0 + hi * (q1 + t1 * (q2 + hi * (q3 + t1 * q4))) - target;
+  if (fhi > 0) {
+    T[0] = hi;
+    return;
+  }
   let side = 0;
   for (let it = 0; it < 100 && fhi !== 0 && hi - lo > 1e-15; it++) {
     let x = lo + (hi - lo) * (flo / (flo - fhi));
     if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
-    const fx = dense(x, i) - target;
+    t1 = 1 - x;
+    const fx = q0 + x * (q1 + t1 * (q2 + x * (q3 + t1 * q4))) - target;
     if (fx > 0) {
       lo = x;
       flo = fx;
@@ -664,5 +678,5 @@ function root(i: number, target: number, lo: number, hi: number): number {
       side = -1;
     }
   }
-  return hi;
+  T[0] = hi;
 }
