@@ -103,7 +103,7 @@ export function simulateFixedStep(scene: Scene, shot: Shot, maxTime = 60): Fixed
         }
         const vyf = a.vx * nx + a.vy * ny;
         if (vyf <= 0) continue;
-        const out = cushionRebound({ vx: a.vx * ny - a.vy * nx, vy: vyf, wx: a.wx * ny - a.wy * nx, wy: a.wx * nx + a.wy * ny, wz: a.wz }, cp, { tolerance: 'balanced' });
+        const out = cushionRebound({ vx: a.vx * ny - a.vy * nx, vy: vyf, wx: a.wx * ny - a.wy * nx, wy: a.wx * nx + a.wy * ny, wz: a.wz }, cp, { tolerance: 'accurate' });
         a.vx = out.vx * ny + out.vy * nx;
         a.vy = -out.vx * nx + out.vy * ny;
         a.wx = out.wx * ny + out.wy * nx;

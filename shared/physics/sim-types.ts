@@ -33,7 +33,7 @@ export interface Shot {
 export interface SimOptions {
   /** Bracket width of event times (s). Default 1e-12: positions to 1e-11 m at 10 m/s. */
   readonly rootTolerance?: number;
-  /** Accuracy setting of the cushion impacts (see cushionRebound). Default 'balanced'. */
+  /** Accuracy setting of the cushion impacts (see cushionRebound). Default 'accurate', the kernel's own. */
   readonly cushionTolerance?: CushionToleranceName | number;
 }
 

@@ -88,7 +88,7 @@ export function validateOptions(options: SimOptions | undefined): { rootToleranc
   if (typeof rootTolerance !== 'number' || !(rootTolerance >= 1e-15 && rootTolerance <= 1e-3)) {
     fail(`options.rootTolerance must be in [1e-15, 1e-3] s, got ${String(rootTolerance)}`);
   }
-  const cushionTolerance = options?.cushionTolerance ?? 'balanced';
+  const cushionTolerance = options?.cushionTolerance ?? 'accurate';
   const named = typeof cushionTolerance === 'string' && Object.prototype.hasOwnProperty.call(CUSHION_TOLERANCES, cushionTolerance);
   const numeric = typeof cushionTolerance === 'number' && cushionTolerance >= 1e-12 && cushionTolerance <= 1e-2;
   if (!named && !numeric) {
