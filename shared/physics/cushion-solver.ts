@@ -17,7 +17,8 @@ import type { FastHost } from './cushion-fast.ts';
 import { CushionModel, SLIDE, STICK } from './cushion-model.ts';
 import type { CushionOutcome } from './cushion-types.ts';
 import {
-  EVENT_FRACTION, HINT_FRACTION, invRoot, MAX_STEPS, piFactor, QS_EXIT, QS_FRACTION, QS_RHO, TURN_MAX, ZERO_FRACTION,
+  EVENT_FRACTION, HINT_FRACTION, invRoot, MAX_STEPS, piFactor, QS_EXIT, QS_FRACTION, QS_GROW, QS_RHO, TURN_MAX,
+  ZERO_FRACTION,
 } from './cushion-control.ts';
 
 export { MAX_STEPS } from './cushion-control.ts';
@@ -470,6 +471,11 @@ export class CushionSolver implements FastHost {
       if (lam < 0 && along > 0) {
         const t = along / -lam;
         if (t < d) d = t;
+      } else if (lam > 0) {
+        // Growing: its exit from slaving is checked at step starts, so one step must not carry
+        // it far past QS_EXIT (the error estimate does not see what slaving neglects).
+        const t = (QS_GROW * this.V - r) / lam;
+        if (t > 0 && t < d) d = t;
       }
     }
     return d < step ? d : step;
