@@ -9,6 +9,7 @@ import type { CushionModel } from './cushion-model.ts';
 import {
   A21, A31, A32, A41, A42, A43, A51, A52, A53, A54, A61, A62, A63, A64, A65, B1, B3, B4, B5, B6, E1, E3, E4, E5, E6, E7, D1, D3, D4, D5, D6, D7,
 } from './cushion-tableau.ts';
+import { DENSE_STRIDE, denseValue } from './cushion-dense.ts';
 
 export const DIM = 6;
 
@@ -27,11 +28,8 @@ export class Dopri5 {
   /** Max over components of |error estimate| / atol. */
   err = -0;
   private h = -0;
-  private readonly r1 = new Float64Array(DIM);
-  private readonly r2 = new Float64Array(DIM);
-  private readonly r3 = new Float64Array(DIM);
-  private readonly r4 = new Float64Array(DIM);
-  private readonly r5 = new Float64Array(DIM);
+  /** The continuous extension of the last step (cushion-dense.ts layout). */
+  readonly dense = new Float64Array(DENSE_STRIDE * DIM);
 
   /** One step of size h from y (k1 must hold f(y)). Fills y1, k7 and err. Unrolled by hand. */
   step(model: CushionModel, y: Float64Array, h: number, atol: Float64Array): void {
@@ -242,23 +240,23 @@ export class Dopri5 {
 
   /** Prepares the continuous extension of the last step taken from y (before swap()). */
   prepareDense(y: Float64Array): void {
-    const { k1, k3, k4, k5, k6, k7, y1, r1, r2, r3, r4, r5 } = this;
+    const { k1, k3, k4, k5, k6, k7, y1, dense } = this;
     const h = this.h;
     for (let i = 0; i < DIM; i++) {
       const dy = y1[i]! - y[i]!;
       const b = h * k1[i]! - dy;
-      r1[i] = y[i]!;
-      r2[i] = dy;
-      r3[i] = b;
-      r4[i] = dy - h * k7[i]! - b;
-      r5[i] = h * (D1 * k1[i]! + D3 * k3[i]! + D4 * k4[i]! + D5 * k5[i]! + D6 * k6[i]! + D7 * k7[i]!);
+      const o = DENSE_STRIDE * i;
+      dense[o] = y[i]!;
+      dense[o + 1] = dy;
+      dense[o + 2] = b;
+      dense[o + 3] = dy - h * k7[i]! - b;
+      dense[o + 4] = h * (D1 * k1[i]! + D3 * k3[i]! + D4 * k4[i]! + D5 * k5[i]! + D6 * k6[i]! + D7 * k7[i]!);
     }
   }
 
   /** Component i of the continuous extension at fraction theta of the step. */
   denseAt(theta: number, i: number): number {
-    const t1 = 1 - theta;
-    return this.r1[i]! + theta * (this.r2[i]! + t1 * (this.r3[i]! + theta * (this.r4[i]! + t1 * this.r5[i]!)));
+    return denseValue(this.dense, i, theta);
   }
 
   /** The whole state at fraction theta of the step. */

@@ -13,6 +13,7 @@ import {
   A21, A31, A32, A41, A42, A43, A51, A52, A53, A54, A61, A62, A63, A64, A65, B1, B3, B4, B5, B6,
   D1, D3, D4, D5, D6, D7, E1, E3, E4, E5, E6, E7,
 } from './cushion-tableau.ts';
+import { denseRoot } from './cushion-dense.ts';
 
 /** What the general loop does next (the return value of fastSteps). */
 export const FAST_GENERAL = 0;
@@ -635,48 +636,9 @@ function denseAll(theta: number): void {
 }
 
 /**
- * The first theta in [T[1], T[2]] where variable i of the continuous extension falls to T[3],
- * into T[0] (CushionSolver.root: Illinois-modified regula falsi, the same iterations).
+ * The theta in [T[1], T[2]] where variable i of the continuous extension falls to T[3], into
+ * T[0] (cushion-dense.ts, as CushionSolver.root).
  */
 function root(i: number): void {
-  const o = 5 * i;
-  const q0 = Q[o]!;
-  const q1 = Q[o + 1]!;
-  const q2 = Q[o + 2]!;
-  const q3 = Q[o + 3]!;
-  const q4 = Q[o + 4]!;
-  const target = T[3]!;
-  let lo = T[1]!;
-  let hi = T[2]!;
-  let t1 = 1 - lo;
-  let flo = q0 + lo * (q1 + t1 * (q2 + lo * (q3 + t1 * q4))) - target;
-  if (!(flo > 0)) {
-    T[0] = lo;
-    return;
-  }
-  t1 = 1 - hi;
-  let fhi = q0 + hi * (q1 + t1 * (q2 + hi * (q3 + t1 * q4))) - target;
-  if (fhi > 0) {
-    T[0] = hi;
-    return;
-  }
-  let side = 0;
-  for (let it = 0; it < 100 && fhi !== 0 && hi - lo > 1e-15; it++) {
-    let x = lo + (hi - lo) * (flo / (flo - fhi));
-    if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
-    t1 = 1 - x;
-    const fx = q0 + x * (q1 + t1 * (q2 + x * (q3 + t1 * q4))) - target;
-    if (fx > 0) {
-      lo = x;
-      flo = fx;
-      if (side === 1) fhi *= 0.5;
-      side = 1;
-    } else {
-      hi = x;
-      fhi = fx;
-      if (side === -1) flo *= 0.5;
-      side = -1;
-    }
-  }
-  T[0] = hi;
+  T[0] = denseRoot(Q, i, T[3]!, T[1]!, T[2]!);
 }

@@ -11,6 +11,7 @@
 //  - the ball can recede no more although the target is not reached ('stalled', see
 //    cushion-types.ts): ends there with vy = 0.
 // Only + - * / and Math.sqrt. A step count cap throws: it never returns a wrong answer.
+import { denseRoot } from './cushion-dense.ts';
 import { Dopri5, DIM } from './cushion-dopri.ts';
 import { FAST_END, FAST_SETTLE, fastSteps } from './cushion-fast.ts';
 import type { FastHost } from './cushion-fast.ts';
@@ -634,30 +635,32 @@ export class CushionSolver implements FastHost {
   }
 
   /** Event function at fraction theta of the last step (> 0 before the event). */
-  private eventAt(kind: number, target: number, theta: number): number {
+  private eventAt(kind: number, theta: number): number {
     const rk = this.rk;
-    if (kind === EV_VY) return rk.denseAt(theta, 1);
     if (kind === EV_VY_BACK) return -rk.denseAt(theta, 1);
-    if (kind === EV_WORK) return rk.denseAt(theta, 5) - target;
     rk.denseAll(theta, this.kd);
     return -this.model.stickMargin(this.kd);
   }
 
   /**
    * The first theta in [lo, hi] where the event function reaches zero (it is > 0 at lo and
-   * <= 0 at hi, or the event is at lo): Illinois-modified regula falsi, at most 100 iterations,
+   * <= 0 at hi, or the event is at lo). vy and the work are variables of the continuous
+   * extension: Newton's method on it (cushion-dense.ts). The others (vy back at zero, a stuck
+   * contact leaving its cone): Illinois-modified regula falsi, at most 100 iterations,
    * returning the bracket's event side.
    */
   private root(kind: number, target: number, lo: number, hi: number): number {
-    let flo = this.eventAt(kind, target, lo);
+    if (kind === EV_VY) return denseRoot(this.rk.dense, 1, 0, lo, hi);
+    if (kind === EV_WORK) return denseRoot(this.rk.dense, 5, target, lo, hi);
+    let flo = this.eventAt(kind, lo);
     if (!(flo > 0)) return lo;
-    let fhi = this.eventAt(kind, target, hi);
+    let fhi = this.eventAt(kind, hi);
     if (fhi > 0) return hi;
     let side = 0;
     for (let i = 0; i < 100 && fhi !== 0 && hi - lo > 1e-15; i++) {
       let x = lo + (hi - lo) * (flo / (flo - fhi));
       if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
-      const fx = this.eventAt(kind, target, x);
+      const fx = this.eventAt(kind, x);
       if (fx > 0) {
         lo = x;
         flo = fx;

@@ -1,0 +1,56 @@
+// The continuous extension of a Dormand-Prince step (Hairer, Norsett and Wanner, "Solving ODEs
+// I", 2nd ed., sec. II.6, eq. 6.12 with Shampine's 4th-order weights), stored as 5 coefficients
+// per variable, and the location of an event on it. Shared by the general step (cushion-dopri.ts)
+// and the inner loop (cushion-fast.ts), so both locate events on the same bits.
+
+/** Coefficients per variable in a dense-output array (variable i at 5 i .. 5 i + 4). */
+export const DENSE_STRIDE = 5;
+
+/** Variable i at fraction theta of the step: q0 + θ(q1 + (1-θ)(q2 + θ(q3 + (1-θ) q4))). */
+export function denseValue(q: Float64Array, i: number, theta: number): number {
+  const t1 = 1 - theta;
+  const o = DENSE_STRIDE * i;
+  return q[o]! + theta * (q[o + 1]! + t1 * (q[o + 2]! + theta * (q[o + 3]! + t1 * q[o + 4]!)));
+}
+
+/**
+ * The theta in [lo, hi] where variable i of the extension falls to target, given that it is
+ * above target at lo and at or below it at hi (otherwise lo, or hi when it never falls there).
+ * Newton's method on the quartic from the secant point, kept inside the bracket by bisection:
+ * 3.9 iterations (value and slope) on the benchmark grids, where a regula falsi took 8 to 9.
+ */
+export function denseRoot(q: Float64Array, i: number, target: number, lo: number, hi: number): number {
+  const o = DENSE_STRIDE * i;
+  const q0 = q[o]!;
+  const q1 = q[o + 1]!;
+  const q2 = q[o + 2]!;
+  const q3 = q[o + 3]!;
+  const q4 = q[o + 4]!;
+  let t = 1 - lo;
+  const flo = q0 + lo * (q1 + t * (q2 + lo * (q3 + t * q4))) - target;
+  if (!(flo > 0)) return lo;
+  t = 1 - hi;
+  const fhi = q0 + hi * (q1 + t * (q2 + hi * (q3 + t * q4))) - target;
+  if (fhi > 0) return hi;
+  let x = lo + (hi - lo) * (flo / (flo - fhi));
+  for (let it = 0; it < 60; it++) {
+    // P = q0 + θA, A = q1 + (1-θ)B, B = q2 + θC, C = q3 + (1-θ)q4, and their derivatives.
+    t = 1 - x;
+    const c = q3 + t * q4;
+    const b = q2 + x * c;
+    const a = q1 + t * b;
+    const f = q0 + x * a - target;
+    if (f === 0) return x;
+    if (f > 0) lo = x;
+    else hi = x;
+    const db = c - x * q4;
+    const da = t * db - b;
+    const d = a + x * da;
+    let next = x - f / d;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    const moved = Math.abs(next - x);
+    x = next;
+    if (moved <= 1e-15 || hi - lo <= 1e-15) break;
+  }
+  return x;
+}
