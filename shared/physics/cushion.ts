@@ -29,22 +29,25 @@ export interface CushionImpact {
 // per step).
 const solver = new CushionSolver();
 
-function run(state: CushionState, params: CushionParams, options: CushionOptions | undefined): CushionImpact {
+/** Checks the input and solves the impact into `solver`; false when vy <= 0 (no impact). */
+function solve(state: CushionState, params: CushionParams, options: CushionOptions | undefined): boolean {
   validateState(state);
   validateParams(params);
   const tol = resolveTolerance(options);
-  if (!(state.vy > 0)) {
-    return {
-      state: { vx: state.vx, vy: state.vy, wx: state.wx, wy: state.wy, wz: state.wz },
-      outcome: 'no-impact',
-      steps: 0,
-      rejectedSteps: 0,
-    };
-  }
+  if (!(state.vy > 0)) return false;
   solver.solve(
     state.vx, state.vy, state.wx, state.wy, state.wz,
     params.M, params.R, params.h, params.ee, params.muS, params.muW, tol,
   );
+  return true;
+}
+
+function copyOf(state: CushionState): CushionStateOut {
+  return { vx: state.vx, vy: state.vy, wx: state.wx, wy: state.wy, wz: state.wz };
+}
+
+function run(state: CushionState, params: CushionParams, options: CushionOptions | undefined): CushionImpact {
+  if (!solve(state, params, options)) return { state: copyOf(state), outcome: 'no-impact', steps: 0, rejectedSteps: 0 };
   return { state: solver.result(), outcome: solver.outcome, steps: solver.steps, rejectedSteps: solver.rejected };
 }
 
@@ -55,7 +58,8 @@ function run(state: CushionState, params: CushionParams, options: CushionOptions
  * e_e outside [0, 1], negative friction or a bad tolerance.
  */
 export function cushionRebound(state: CushionState, params: CushionParams, options?: CushionOptions): CushionStateOut {
-  return run(state, params, options).state;
+  // (Without run's record: one object per impact, this is called for every cushion hit.)
+  return solve(state, params, options) ? solver.result() : copyOf(state);
 }
 
 /** cushionRebound with its outcome and step counts. */
