@@ -13,7 +13,7 @@ import {
   A21, A31, A32, A41, A42, A43, A51, A52, A53, A54, A61, A62, A63, A64, A65, B1, B3, B4, B5, B6,
   D1, D3, D4, D5, D6, D7, E1, E3, E4, E5, E6, E7,
 } from './cushion-tableau.ts';
-import { denseRoot } from './cushion-dense.ts';
+import { denseRoot, denseValue } from './cushion-dense.ts';
 
 /** What the general loop does next (the return value of fastSteps). */
 export const FAST_GENERAL = 0;
@@ -57,9 +57,8 @@ const K = new Float64Array(42);
 const Y0 = new Float64Array(6);
 const Y1 = new Float64Array(6);
 const Q = new Float64Array(30);
-// A state on the extension, and root's arguments (T[1..3]) and result (T[0]).
+// A state on the extension.
 const D = new Float64Array(6);
-const T = new Float64Array(4);
 
 /**
  * Runs the general loop's iterations while both contacts slip and no slip is slaved, from the
@@ -132,7 +131,9 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
     turn = Math.abs(qx * fy - qy * fx) / rc;
     if (turn * h > TURN_MAX * rc) h = TURN_MAX * rc / turn;
 
-    // One Dormand-Prince step (Dopri5.stepFast), stages 2-6 then the end (k7).
+    // One Dormand-Prince step (Dopri5.stepFast), stages 2-6 then the end (k7). The derivative
+    // is written out in each stage instead of called: V8 does not inline seven calls of it,
+    // and the called version was about 15% slower (docs/cushion.md, "Inner loop").
     let mdI = Infinity;
     let mdC = Infinity;
     const bx0 = y0 + h * (A21 * a0);
@@ -461,15 +462,10 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
       K[24] = e0; K[25] = e1; K[26] = e2; K[27] = e3; K[28] = e4; K[29] = e5;
       K[30] = f0; K[31] = f1; K[32] = f2; K[33] = f3; K[34] = f4; K[35] = f5;
       K[36] = g0; K[37] = g1; K[38] = g2; K[39] = g3; K[40] = g4; K[41] = g5;
-      T[0] = h;
-      prepareDense();
+      prepareDense(h);
     }
     if (!restitution && x1 <= 0) {
-      T[1] = 0;
-      T[2] = 1;
-      T[3] = 0;
-      root(1);
-      from = T[0]!;
+      from = denseRoot(Q, 1, 0, 0, 1);
       denseAll(from);
       const v0 = D[0]!;
       const v1 = D[1]!;
@@ -510,11 +506,7 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
     }
     if (endAt < 0 && restitution) {
       if (x5 <= wEnd) {
-        T[1] = from;
-        T[2] = 1;
-        T[3] = wEnd;
-        root(5);
-        endAt = T[0]!;
+        endAt = denseRoot(Q, 5, wEnd, from, 1);
       } else if (x1 >= 0) {
         steps--; // vy came back to zero first: stalled
         break;
@@ -605,12 +597,11 @@ function crossingFraction(d0: number, d1: number): number {
   return t < 0.01 ? 0.01 : t > 0.99 ? 0.99 : t;
 }
 
-// The helpers below take and return their numbers through typed arrays: a call V8 does not
-// inline would box every double argument and result.
+// The helpers below return their numbers through typed arrays: a call V8 does not inline
+// boxes every double it returns.
 
-/** Dopri5.prepareDense for the step of size T[0] from Y0 to Y1 with the stages in K, into Q. */
-function prepareDense(): void {
-  const h = T[0]!;
+/** Dopri5.prepareDense for the step of size h from Y0 to Y1 with the stages in K, into Q. */
+function prepareDense(h: number): void {
   for (let i = 0; i < 6; i++) {
     const y = Y0[i]!;
     const dy = Y1[i]! - y;
@@ -628,17 +619,5 @@ function prepareDense(): void {
 
 /** The continuous extension at fraction theta of the step, all variables, into D (Dopri5.denseAll). */
 function denseAll(theta: number): void {
-  const t1 = 1 - theta;
-  for (let i = 0; i < 6; i++) {
-    const o = 5 * i;
-    D[i] = Q[o]! + theta * (Q[o + 1]! + t1 * (Q[o + 2]! + theta * (Q[o + 3]! + t1 * Q[o + 4]!)));
-  }
-}
-
-/**
- * The theta in [T[1], T[2]] where variable i of the continuous extension falls to T[3], into
- * T[0] (cushion-dense.ts, as CushionSolver.root).
- */
-function root(i: number): void {
-  T[0] = denseRoot(Q, i, T[3]!, T[1]!, T[2]!);
+  for (let i = 0; i < 6; i++) D[i] = denseValue(Q, i, theta);
 }
