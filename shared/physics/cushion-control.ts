@@ -32,6 +32,21 @@ export const QS_GROW = 0.1;
 /** Largest turn of a slip direction in one step (radians), predicted from its rate. */
 export const TURN_MAX = 0.5;
 
+/**
+ * The step after an accepted one of size `step` and error `err` (the previous accepted error
+ * `prev`): PI control (Gustafsson), err^(-1/8) × prev^(1/16), roughly the usual
+ * err^(-0.7/5) × prev^(0.4/5) with square roots only, which damps the growth after a step that
+ * went well just before a hard region; between 0.2 and 5 times the step.
+ */
+export function nextStep(step: number, err: number, prev: number): number {
+  return step * Math.min(5, Math.max(0.2, 0.9 * piFactor(err, prev)));
+}
+
+/** The error remembered for the next step's control (floored: one tiny error is no trend). */
+export function errorMemory(err: number): number {
+  return err > 1e-4 ? err : 1e-4;
+}
+
 /** err^(-1/8) × prev^(1/16) with square roots. */
 export function piFactor(err: number, prev: number): number {
   if (!(err > 1e-30)) return 1e6;

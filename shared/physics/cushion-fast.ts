@@ -7,7 +7,7 @@
 // handed back to the general loop at the start of the iteration that needs it, or right after
 // a step when a slip has become small. Equations: cushion-model.ts (Mathavan et al. 2010,
 // eq. 14 with both contacts slipping).
-import { MAX_STEPS, piFactor, invRoot, QS_RHO, TURN_MAX } from './cushion-control.ts';
+import { errorMemory, invRoot, MAX_STEPS, nextStep, QS_RHO, TURN_MAX } from './cushion-control.ts';
 import type { CushionModel } from './cushion-model.ts';
 import {
   A21, A31, A32, A41, A42, A43, A51, A52, A53, A54, A61, A62, A63, A64, A65, B1, B3, B4, B5, B6,
@@ -558,9 +558,8 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
       code = FAST_SETTLE;
       break;
     }
-    // PI step control (CushionSolver.solve).
-    step = h * Math.min(5, Math.max(0.2, 0.9 * piFactor(err, errPrev)));
-    errPrev = err > 1e-4 ? err : 1e-4;
+    step = nextStep(h, err, errPrev);
+    errPrev = errorMemory(err);
   }
   if (code !== FAST_END) {
     y[0] = y0;

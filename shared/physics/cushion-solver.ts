@@ -18,12 +18,11 @@ import type { FastHost } from './cushion-fast.ts';
 import { CushionModel, SLIDE, STICK } from './cushion-model.ts';
 import type { CushionOutcome } from './cushion-types.ts';
 import {
-  EVENT_FRACTION, HINT_FRACTION, invRoot, MAX_STEPS, piFactor, QS_EXIT, QS_FRACTION, QS_GROW, QS_RHO, TURN_MAX,
+  errorMemory, EVENT_FRACTION, HINT_FRACTION, invRoot, MAX_STEPS, nextStep, QS_EXIT, QS_FRACTION, QS_GROW, QS_RHO, TURN_MAX,
   ZERO_FRACTION,
 } from './cushion-control.ts';
 
 export { MAX_STEPS } from './cushion-control.ts';
-
 
 // Event functions on the continuous extension, signed so that > 0 is before the event.
 const EV_VY = 0;
@@ -159,8 +158,8 @@ export class CushionSolver implements FastHost {
         if (code === FAST_END) return;
         if (code === FAST_SETTLE) {
           if (this.settleSlips(this.rI0, this.rC0, tolV)) return;
-          step *= Math.min(5, Math.max(0.2, 0.9 * piFactor(this.lastErr, errPrev)));
-          errPrev = this.lastErr > 1e-4 ? this.lastErr : 1e-4;
+          step = nextStep(step, this.lastErr, errPrev);
+          errPrev = errorMemory(this.lastErr);
           continue;
         }
       }
@@ -342,11 +341,8 @@ export class CushionSolver implements FastHost {
       rk.swap();
       this.p += step;
       if (this.settleSlips(rI0, rC0, tolV)) return;
-      // PI control (Gustafsson): err^(-0.125) × errPrev^(0.0625), roughly the usual
-      // err^(-0.7/5) × errPrev^(0.4/5) with square roots only; damps the growth after a step
-      // that went well just before a hard region.
-      step *= Math.min(5, Math.max(0.2, 0.9 * piFactor(err, errPrev)));
-      errPrev = err > 1e-4 ? err : 1e-4;
+      step = nextStep(step, err, errPrev);
+      errPrev = errorMemory(err);
     }
   }
 
