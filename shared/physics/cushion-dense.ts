@@ -1,5 +1,5 @@
 // The continuous extension of a Dormand-Prince step (Hairer, Norsett and Wanner, "Solving ODEs
-// I", 2nd ed., sec. II.6, eq. 6.12 with Shampine's 4th-order weights), stored as 5 coefficients
+// I", 2nd ed., sec. II.6, with Shampine's 4th-order weights), stored as 5 coefficients
 // per variable, and the location of an event on it. Shared by the general step (cushion-dopri.ts)
 // and the inner loop (cushion-fast.ts), so both locate events on the same bits.
 
