@@ -3,8 +3,30 @@
 // per variable, and the location of an event on it. Shared by the general step (cushion-dopri.ts)
 // and the inner loop (cushion-fast.ts), so both locate events on the same bits.
 
+import { D1, D3, D4, D5, D6, D7 } from './cushion-tableau.ts';
+
 /** Coefficients per variable in a dense-output array (variable i at 5 i .. 5 i + 4). */
 export const DENSE_STRIDE = 5;
+
+/**
+ * The extension of a step of size h from y to y1 with stage derivatives k1, k3..k7 (k2 has no
+ * weight), for the first y.length variables, into `out`.
+ */
+export function fillDense(
+  out: Float64Array, h: number, y: Float64Array, y1: Float64Array,
+  k1: Float64Array, k3: Float64Array, k4: Float64Array, k5: Float64Array, k6: Float64Array, k7: Float64Array,
+): void {
+  for (let i = 0; i < y.length; i++) {
+    const dy = y1[i]! - y[i]!;
+    const b = h * k1[i]! - dy;
+    const o = DENSE_STRIDE * i;
+    out[o] = y[i]!;
+    out[o + 1] = dy;
+    out[o + 2] = b;
+    out[o + 3] = dy - h * k7[i]! - b;
+    out[o + 4] = h * (D1 * k1[i]! + D3 * k3[i]! + D4 * k4[i]! + D5 * k5[i]! + D6 * k6[i]! + D7 * k7[i]!);
+  }
+}
 
 /** Variable i at fraction theta of the step: q0 + θ(q1 + (1-θ)(q2 + θ(q3 + (1-θ) q4))). */
 export function denseValue(q: Float64Array, i: number, theta: number): number {

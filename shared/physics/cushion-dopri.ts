@@ -7,9 +7,9 @@
 // error estimate. The last stage is evaluated at the step's end (FSAL): 6 evaluations a step.
 import type { CushionModel } from './cushion-model.ts';
 import {
-  A21, A31, A32, A41, A42, A43, A51, A52, A53, A54, A61, A62, A63, A64, A65, B1, B3, B4, B5, B6, E1, E3, E4, E5, E6, E7, D1, D3, D4, D5, D6, D7,
+  A21, A31, A32, A41, A42, A43, A51, A52, A53, A54, A61, A62, A63, A64, A65, B1, B3, B4, B5, B6, E1, E3, E4, E5, E6, E7,
 } from './cushion-tableau.ts';
-import { DENSE_STRIDE, denseValue } from './cushion-dense.ts';
+import { DENSE_STRIDE, denseValue, fillDense } from './cushion-dense.ts';
 
 export const DIM = 6;
 
@@ -240,18 +240,7 @@ export class Dopri5 {
 
   /** Prepares the continuous extension of the last step taken from y (before swap()). */
   prepareDense(y: Float64Array): void {
-    const { k1, k3, k4, k5, k6, k7, y1, dense } = this;
-    const h = this.h;
-    for (let i = 0; i < DIM; i++) {
-      const dy = y1[i]! - y[i]!;
-      const b = h * k1[i]! - dy;
-      const o = DENSE_STRIDE * i;
-      dense[o] = y[i]!;
-      dense[o + 1] = dy;
-      dense[o + 2] = b;
-      dense[o + 3] = dy - h * k7[i]! - b;
-      dense[o + 4] = h * (D1 * k1[i]! + D3 * k3[i]! + D4 * k4[i]! + D5 * k5[i]! + D6 * k6[i]! + D7 * k7[i]!);
-    }
+    fillDense(this.dense, this.h, y, this.y1, this.k1, this.k3, this.k4, this.k5, this.k6, this.k7);
   }
 
   /** Component i of the continuous extension at fraction theta of the step. */

@@ -11,9 +11,9 @@ import { errorMemory, invRoot, MAX_STEPS, nextStep, QS_RHO, TURN_MAX } from './c
 import type { CushionModel } from './cushion-model.ts';
 import {
   A21, A31, A32, A41, A42, A43, A51, A52, A53, A54, A61, A62, A63, A64, A65, B1, B3, B4, B5, B6,
-  D1, D3, D4, D5, D6, D7, E1, E3, E4, E5, E6, E7,
+  E1, E3, E4, E5, E6, E7,
 } from './cushion-tableau.ts';
-import { denseRoot, denseValue } from './cushion-dense.ts';
+import { denseRoot, denseValue, fillDense } from './cushion-dense.ts';
 
 /** What the general loop does next (the return value of fastSteps). */
 export const FAST_GENERAL = 0;
@@ -54,6 +54,12 @@ export interface FastHost {
 // For the continuous extension of a step: its stage derivatives k1..k7 (6 values each, k2
 // unused), the states at its start and end, and the extension (5 coefficients per variable).
 const K = new Float64Array(42);
+const K1 = K.subarray(0, 6);
+const K3 = K.subarray(12, 18);
+const K4 = K.subarray(18, 24);
+const K5 = K.subarray(24, 30);
+const K6 = K.subarray(30, 36);
+const K7 = K.subarray(36, 42);
 const Y0 = new Float64Array(6);
 const Y1 = new Float64Array(6);
 const Q = new Float64Array(30);
@@ -462,7 +468,7 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
       K[24] = e0; K[25] = e1; K[26] = e2; K[27] = e3; K[28] = e4; K[29] = e5;
       K[30] = f0; K[31] = f1; K[32] = f2; K[33] = f3; K[34] = f4; K[35] = f5;
       K[36] = g0; K[37] = g1; K[38] = g2; K[39] = g3; K[40] = g4; K[41] = g5;
-      prepareDense(h);
+      fillDense(Q, h, Y0, Y1, K1, K3, K4, K5, K6, K7);
     }
     if (!restitution && x1 <= 0) {
       from = denseRoot(Q, 1, 0, 0, 1);
@@ -596,25 +602,7 @@ function crossingFraction(d0: number, d1: number): number {
   return t < 0.01 ? 0.01 : t > 0.99 ? 0.99 : t;
 }
 
-// The helpers below return their numbers through typed arrays: a call V8 does not inline
-// boxes every double it returns.
-
-/** Dopri5.prepareDense for the step of size h from Y0 to Y1 with the stages in K, into Q. */
-function prepareDense(h: number): void {
-  for (let i = 0; i < 6; i++) {
-    const y = Y0[i]!;
-    const dy = Y1[i]! - y;
-    const k1 = K[i]!;
-    const k7 = K[36 + i]!;
-    const b = h * k1 - dy;
-    const o = 5 * i;
-    Q[o] = y;
-    Q[o + 1] = dy;
-    Q[o + 2] = b;
-    Q[o + 3] = dy - h * k7 - b;
-    Q[o + 4] = h * (D1 * k1 + D3 * K[12 + i]! + D4 * K[18 + i]! + D5 * K[24 + i]! + D6 * K[30 + i]! + D7 * k7);
-  }
-}
+// Returns through a typed array: a call V8 does not inline boxes every double it returns.
 
 /** The continuous extension at fraction theta of the step, all variables, into D (Dopri5.denseAll). */
 function denseAll(theta: number): void {

@@ -169,7 +169,6 @@ export class CushionSolver implements FastHost {
         );
       }
       // Slip-zero prediction: do not step past the point where a slip speed reaches zero.
-      let aim = false;
       if (model.qsI || model.qsC) {
         this.zeroNow = 0;
         const d = this.slavedStart(step);
@@ -181,10 +180,7 @@ export class CushionSolver implements FastHost {
           model.derivative(y, rk.k1);
           continue;
         }
-        if (d < step) {
-          step = d;
-          aim = true;
-        }
+        if (d < step) step = d;
       }
       if (model.modeI === SLIDE && !model.qsI) {
         const ex = model.slipIx(y);
@@ -194,7 +190,6 @@ export class CushionSolver implements FastHost {
           model.refIx = ex / r;
           model.refIy = ey / r;
           step = this.limitBySlip(ex, ey, r, model.rateIx(rk.k1), model.rateIy(rk.k1), step);
-          if (this.aimed) aim = true;
         } else {
           model.refIx = model.hintIx;
           model.refIy = model.hintIy;
@@ -208,7 +203,6 @@ export class CushionSolver implements FastHost {
           model.refCx = ex / r;
           model.refCy = ey / r;
           step = this.limitBySlip(ex, ey, r, model.rateCx(rk.k1), model.rateCy(rk.k1), step);
-          if (this.aimed) aim = true;
         } else {
           model.refCx = model.hintCx;
           model.refCy = model.hintCy;
@@ -542,28 +536,21 @@ export class CushionSolver implements FastHost {
     return false;
   }
 
-  /** |effective slip| of contact 0 (I) or 1 (C) at the current state. */
-  /** Set by limitBySlip when it shortened the step to land on the slip's zero. */
-  private aimed = false;
-
   /**
    * The step shortened so that a sliding slip (ex, ey), |slip| = r, changing at (rx, ry) per unit
-   * impulse neither passes zero (the step then aims at the zero: aimed) nor turns more than
+   * impulse neither passes zero (the step then aims at the zero) nor turns more than
    * TURN_MAX radians (a small slip turns fast, and the error estimate is blind to a turn much
    * faster than the step).
    */
   private limitBySlip(ex: number, ey: number, r: number, rx: number, ry: number, step: number): number {
-    this.aimed = false;
     const rate = (ex * rx + ey * ry) / r;
-    if (rate < 0 && r <= -rate * step) {
-      step = -r / rate;
-      this.aimed = true;
-    }
+    if (rate < 0 && r <= -rate * step) step = -r / rate;
     const turn = Math.abs(rx * ey - ry * ex) / r;
     if (turn * step > TURN_MAX * r) step = TURN_MAX * r / turn;
     return step;
   }
 
+  /** |effective slip| of contact 0 (I) or 1 (C) at the current state. */
   private slipNorm(contact: number): number {
     const m = this.model;
     const y = this.y;
