@@ -1,6 +1,6 @@
 // The constants of the cushion solver's step and event control, and its step-size factors,
 // shared by the general solver (cushion-solver.ts) and its scalar fast path (cushion-fast.ts)
-// so that both take the same steps. docs/cushion.md explains each choice.
+// so that both control their steps alike. docs/cushion.md explains each choice.
 
 /** Steps (accepted or rejected) after which the solver gives up with an Error. */
 export const MAX_STEPS = 20000;
@@ -33,26 +33,32 @@ export const QS_GROW = 0.1;
 export const TURN_MAX = 0.5;
 
 /**
- * The step after an accepted one of size `step` and error `err` (the previous accepted error
- * `prev`): PI control (Gustafsson), err^(-1/8) × prev^(1/16), roughly the usual
- * err^(-0.7/5) × prev^(0.4/5) with square roots only, which damps the growth after a step that
- * went well just before a hard region; between 0.2 and 5 times the step.
+ * The step after an accepted one of size `step` and error `err`, with `prev` the previous
+ * accepted error as errorMemory keeps it: PI control (Gustafsson), err^(-1/8) × prev^(1/16),
+ * roughly the usual err^(-0.7/5) × prev^(0.4/5) with square roots only, which damps the growth
+ * after a step that went well just before a hard region; between 0.2 and 5 times the step.
+ * The next step waits for this factor, so only three square roots and a division lie between
+ * a step's error and the next step: prev's root was taken while the step ran.
  */
 export function nextStep(step: number, err: number, prev: number): number {
   return step * Math.min(5, Math.max(0.2, 0.9 * piFactor(err, prev)));
 }
 
-/** The error remembered for the next step's control (floored: one tiny error is no trend). */
+/**
+ * What the step control remembers of an accepted error for the next one: its 16th root
+ * (the error floored at 1e-4: one tiny error is no trend).
+ */
 export function errorMemory(err: number): number {
-  return err > 1e-4 ? err : 1e-4;
+  return Math.sqrt(Math.sqrt(Math.sqrt(Math.sqrt(err > 1e-4 ? err : 1e-4))));
 }
 
-/** err^(-1/8) × prev^(1/16) with square roots. */
+/** The memory before any accepted step (an error of 1). */
+export const FIRST_MEMORY = 1;
+
+/** err^(-1/8) × prev^(1/16), with prev as errorMemory keeps it. */
 export function piFactor(err: number, prev: number): number {
   if (!(err > 1e-30)) return 1e6;
-  const q = Math.sqrt(Math.sqrt(Math.sqrt(Math.sqrt(err))));
-  const qp = Math.sqrt(Math.sqrt(Math.sqrt(Math.sqrt(prev))));
-  return qp / (q * q);
+  return prev / Math.sqrt(Math.sqrt(Math.sqrt(err)));
 }
 
 /** err^(-3/16) with four square roots: the step-size factor (the optimal exponent is 1/5). */

@@ -1,7 +1,7 @@
 // The continuous extension of a Dormand-Prince step (Hairer, Norsett and Wanner, "Solving ODEs
 // I", 2nd ed., sec. II.6, with Shampine's 4th-order weights), stored as 5 coefficients
 // per variable, and the location of an event on it. Shared by the general step (cushion-dopri.ts)
-// and the inner loop (cushion-fast.ts), so both locate events on the same bits.
+// and the inner loop (cushion-fast.ts), so both locate events the same way.
 
 import { D1, D3, D4, D5, D6, D7 } from './cushion-tableau.ts';
 
@@ -36,10 +36,21 @@ export function denseValue(q: Float64Array, i: number, theta: number): number {
 }
 
 /**
+ * Newton's method stops after a correction this small (a fraction of the step) that stays
+ * inside the bracket: it converges quadratically, so the root is then within about 1e-12 of the
+ * step, far below what the tolerances can see (an error dθ moves the state by about dθ × the
+ * step's change, under V).
+ */
+export const ROOT_MOVE = 1e-6;
+
+/**
  * The theta in [lo, hi] where variable i of the extension falls to target, given that it is
  * above target at lo and at or below it at hi (otherwise lo, or hi when it never falls there).
- * Newton's method on the quartic from the secant point, kept inside the bracket by bisection:
- * 3.9 iterations (value and slope) on the benchmark grids, where a regula falsi took 8 to 9.
+ * Newton's method on the quartic, kept inside the bracket by bisection, from the root of the
+ * quadratic q0 + θ q1 + θ(1-θ) q2 (the extension without its two highest terms) when that lies
+ * inside the bracket, else from the secant point: 2.1 iterations (value and slope) a root on
+ * the benchmark grid, where the secant start took 4 (5 for the work, which is nearly
+ * quadratic in θ) and a regula falsi 8 to 9.
  */
 export function denseRoot(q: Float64Array, i: number, target: number, lo: number, hi: number): number {
   const o = DENSE_STRIDE * i;
@@ -54,7 +65,14 @@ export function denseRoot(q: Float64Array, i: number, target: number, lo: number
   t = 1 - hi;
   const fhi = q0 + hi * (q1 + t * (q2 + hi * (q3 + t * q4))) - target;
   if (fhi > 0) return hi;
-  let x = lo + (hi - lo) * (flo / (flo - fhi));
+  // -q2 θ² + (q1 + q2) θ + (q0 - target) = 0, for a falling variable (q1 + q2 < 0): the root
+  // 2c / (-b + √(b² - 4ac)), written without cancellation.
+  const b = q1 + q2;
+  const c0 = q0 - target;
+  const disc = b * b + 4 * q2 * c0;
+  let x = -1;
+  if (b < 0 && disc >= 0) x = (2 * c0) / (Math.sqrt(disc) - b);
+  if (!(x > lo && x < hi)) x = lo + (hi - lo) * (flo / (flo - fhi));
   for (let it = 0; it < 60; it++) {
     // P = q0 + θA, A = q1 + (1-θ)B, B = q2 + θC, C = q3 + (1-θ)q4, and their derivatives.
     t = 1 - x;
@@ -68,11 +86,18 @@ export function denseRoot(q: Float64Array, i: number, target: number, lo: number
     const db = c - x * q4;
     const da = t * db - b;
     const d = a + x * da;
-    let next = x - f / d;
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    const moved = Math.abs(next - x);
+    const dx = f / d;
+    let next = x - dx;
+    if (!(next > lo && next < hi)) {
+      // Newton leaves the bracket: x is the root to rounding (the correction is at the last
+      // bits and x a bracket end), or the slope misleads and the bracket is halved.
+      if (Math.abs(dx) <= 1e-15) return x;
+      next = 0.5 * (lo + hi);
+    } else if (Math.abs(dx) <= ROOT_MOVE) {
+      return next;
+    }
     x = next;
-    if (moved <= 1e-15 || hi - lo <= 1e-15) break;
+    if (hi - lo <= 1e-15) break;
   }
   return x;
 }

@@ -1,11 +1,15 @@
 // The cushion solver's inner loop for its most common stretch: both contacts slipping, neither
-// slaved (see cushion-solver.ts). It takes exactly the steps CushionSolver's general loop would
-// take (the same Dormand-Prince steps, step limits, rejections, event location and step
-// control, operation for operation, so the same bits), but on local numbers and typed arrays
-// instead of the model's fields and method calls: about 1.3 times faster per step (measured,
-// docs/cushion.md). Whatever needs the rolling conditions, a slaved slip or a stalled ending is
-// handed back to the general loop at the start of the iteration that needs it, or right after
-// a step when a slip has become small. Equations: cushion-model.ts (Mathavan et al. 2010,
+// slaved (see cushion-solver.ts). It takes the steps CushionSolver's general loop would take
+// (the same Dormand-Prince steps, step limits, rejections, event location and step control) on
+// local numbers, with the arithmetic arranged for a short chain from one stage to the next: the
+// four slips are stepped as variables of their own with their rates (so a stage's slip is one
+// sum away, not rebuilt from the velocities), the tableau is scaled by the step (a stage's
+// newest term is one product and one sum) and only vy of the other variables is formed at the
+// stages (for the work's rate). The two loops agree to rounding; where rounding tips a step
+// decision, to within the tolerance (tests/unit/cushion-fast.test.ts). About twice as fast per
+// step as the general loop (docs/cushion.md). Whatever needs the rolling conditions, a
+// slaved slip or a stalled ending is handed back to the general loop at the start of the
+// iteration that needs it, or right after a step when a slip has become small. Equations: cushion-model.ts (Mathavan et al. 2010,
 // eq. 14 with both contacts slipping).
 import { errorMemory, invRoot, MAX_STEPS, nextStep, QS_RHO, TURN_MAX } from './cushion-control.ts';
 import type { CushionModel } from './cushion-model.ts';
@@ -77,6 +81,17 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
   const c = m.c;
   const nmuW = -m.muW;
   const muS = m.muS;
+  // The table's normal times -μs is kMu uIy - muSs (with g = -μw uI); the slips' rates
+  // (cushion-model.ts) are w uI + (-μs n) z uC.
+  const muSs = muS * s;
+  const kMu = -(muS * c * m.muW);
+  const sc = s * c;
+  const wIx = -3.5 * m.muW;
+  const zIx = 1 - 2.5 * s;
+  const wIy = -(s * s + 2.5) * m.muW;
+  const zIy = 2.5 - s;
+  const wCx = -(1 - 2.5 * s) * m.muW;
+  const wCy = -(2.5 - s) * m.muW;
   const epsSlip = m.epsSlip;
   const oIx = m.offIx;
   const oIy = m.offIy;
@@ -85,8 +100,8 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
   const epsEv = host.epsEv;
   const tol0 = -epsEv;
   const small = QS_RHO * host.V;
-  const at = host.atolV;
-  const at5 = host.atolW;
+  const iat = 1 / host.atolV;
+  const iat5 = 1 / host.atolW;
   const ee2 = host.ee2;
   let step = host.step;
   let errPrev = host.errPrev;
@@ -107,317 +122,340 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
   let a3 = k1[3]!;
   let a4 = k1[4]!;
   let a5 = k1[5]!;
+  // The slips (minus their offsets) and their rates, stepped alongside y.
+  let eIx = y0 + s * y3 - c * y4 - oIx;
+  let eIy = -s * y1 + y2 - oIy;
+  let eCx = y0 - y3 - oCx;
+  let eCy = y1 + y2 - oCy;
+  let aIx = a0 + s * a3 - c * a4;
+  let aIy = -s * a1 + a2;
+  let aCx = a0 - a3;
+  let aCy = a1 + a2;
+  let r = Math.sqrt(eIx * eIx + eIy * eIy);
+  let rc = Math.sqrt(eCx * eCx + eCy * eCy);
   let code = FAST_GENERAL;
   for (;;) {
     if (steps >= MAX_STEPS) break; // the general loop throws
-    // Slip directions at the step's start and the step limits (CushionSolver.limitBySlip).
-    const ex = y0 + s * y3 - c * y4 - oIx;
-    const ey = -s * y1 + y2 - oIy;
-    const r = Math.sqrt(ex * ex + ey * ey);
-    const fx = y0 - y3 - oCx;
-    const fy = y1 + y2 - oCy;
-    const rc = Math.sqrt(fx * fx + fy * fy);
     if (!(r > epsSlip) || !(rc > epsSlip)) break; // onset directions: the general loop
     steps++;
-    const rIx = ex / r;
-    const rIy = ey / r;
+    // Slip directions at the step's start and the step limits (CushionSolver.limitBySlip).
+    const rIx = eIx / r;
+    const rIy = eIy / r;
     let h = step;
-    let qx = a0 + s * a3 - c * a4;
-    let qy = -s * a1 + a2;
-    let rate = (ex * qx + ey * qy) / r;
+    let rate = (eIx * aIx + eIy * aIy) / r;
     if (rate < 0 && r <= -rate * h) h = -r / rate;
-    let turn = Math.abs(qx * ey - qy * ex) / r;
+    let turn = Math.abs(aIx * eIy - aIy * eIx) / r;
     if (turn * h > TURN_MAX * r) h = TURN_MAX * r / turn;
-    const rCx = fx / rc;
-    const rCy = fy / rc;
-    qx = a0 - a3;
-    qy = a1 + a2;
-    rate = (fx * qx + fy * qy) / rc;
+    const rCx = eCx / rc;
+    const rCy = eCy / rc;
+    rate = (eCx * aCx + eCy * aCy) / rc;
     if (rate < 0 && rc <= -rate * h) h = -rc / rate;
-    turn = Math.abs(qx * fy - qy * fx) / rc;
+    turn = Math.abs(aCx * eCy - aCy * eCx) / rc;
     if (turn * h > TURN_MAX * rc) h = TURN_MAX * rc / turn;
 
-    // One Dormand-Prince step (Dopri5.stepFast), stages 2-6 then the end (k7). The derivative
-    // is written out in each stage instead of called: V8 does not inline seven calls of it,
-    // and the called version was about 15% slower (docs/cushion.md, "Inner loop").
+    // One Dormand-Prince step. The tableau is scaled by the step, so that a stage's newest
+    // term costs one product and one sum on the way to the next stage; the slips are stepped
+    // with their own rates, vy only for the work's rate, the other variables only to the end.
+    const hA21 = h * A21;
+    const hA31 = h * A31;
+    const hA32 = h * A32;
+    const hA41 = h * A41;
+    const hA42 = h * A42;
+    const hA43 = h * A43;
+    const hA51 = h * A51;
+    const hA52 = h * A52;
+    const hA53 = h * A53;
+    const hA54 = h * A54;
+    const hA61 = h * A61;
+    const hA62 = h * A62;
+    const hA63 = h * A63;
+    const hA64 = h * A64;
+    const hA65 = h * A65;
+    const hB1 = h * B1;
+    const hB3 = h * B3;
+    const hB4 = h * B4;
+    const hB5 = h * B5;
+    const hB6 = h * B6;
+    const hE1 = h * E1;
+    const hE3 = h * E3;
+    const hE4 = h * E4;
+    const hE5 = h * E5;
+    const hE6 = h * E6;
+    const hE7 = h * E7;
     let mdI = Infinity;
     let mdC = Infinity;
-    const bx0 = y0 + h * (A21 * a0);
-    const bx1 = y1 + h * (A21 * a1);
-    const bx2 = y2 + h * (A21 * a2);
-    const bx3 = y3 + h * (A21 * a3);
-    const bx4 = y4 + h * (A21 * a4);
-    // dy/dp at stage b (CushionModel.evalFast, both slipping).
+    const bsIx = eIx + hA21 * aIx;
+    const bsIy = eIy + hA21 * aIy;
+    const bsCx = eCx + hA21 * aCx;
+    const bsCy = eCy + hA21 * aCy;
+    const bv = y1 + hA21 * a1;
+    // dy/dp and the slip rates at stage b.
     let b0: number, b1: number, b2: number, b3: number, b4: number, b5: number;
+    let bIx: number, bIy: number, bCx: number, bCy: number;
     {
-      const sx = bx0 + s * bx3 - c * bx4 - oIx;
-      const sy = -s * bx1 + bx2 - oIy;
-      const d = sx * rIx + sy * rIy;
+      const d = bsIx * rIx + bsIy * rIy;
       if (d < mdI) mdI = d;
-      const sr = Math.sqrt(sx * sx + sy * sy);
-      let ux = rIx;
-      let uy = rIy;
+      const sr = Math.sqrt(bsIx * bsIx + bsIy * bsIy);
+      let uIx = rIx;
+      let uIy = rIy;
       if (!(d <= 0 || sr <= epsSlip)) {
-        const ir = 1 / sr;
-        ux = sx * ir;
-        uy = sy * ir;
+        uIx = bsIx / sr;
+        uIy = bsIy / sr;
       }
-      const gx = nmuW * ux;
-      const gy = nmuW * uy;
-      let n = s - c * gy;
-      if (n < 0) n = 0;
-      const mu = muS * n;
-      const tx = bx0 - bx3 - oCx;
-      const ty = bx1 + bx2 - oCy;
-      const dc = tx * rCx + ty * rCy;
+      const dc = bsCx * rCx + bsCy * rCy;
       if (dc < mdC) mdC = dc;
-      const tr = Math.sqrt(tx * tx + ty * ty);
-      ux = rCx;
-      uy = rCy;
+      const tr = Math.sqrt(bsCx * bsCx + bsCy * bsCy);
+      let uCx = rCx;
+      let uCy = rCy;
       if (!(dc <= 0 || tr <= epsSlip)) {
-        const ir = 1 / tr;
-        ux = tx * ir;
-        uy = ty * ir;
+        uCx = bsCx / tr;
+        uCy = bsCy / tr;
       }
-      const hx = -mu * ux;
-      const hy = -mu * uy;
+      let nmu = kMu * uIy - muSs;
+      if (nmu > 0) nmu = 0;
+      const gx = nmuW * uIx;
+      const gy = nmuW * uIy;
+      const hx = nmu * uCx;
+      const hy = nmu * uCy;
       b0 = gx + hx;
       b1 = -c - s * gy + hy;
       b2 = 2.5 * (gy + hy);
       b3 = 2.5 * (s * gx - hx);
       b4 = -2.5 * c * gx;
-      b5 = c * bx1;
+      b5 = c * bv;
+      bIx = wIx * uIx + nmu * (zIx * uCx);
+      bIy = sc + wIy * uIy + nmu * (zIy * uCy);
+      bCx = wCx * uIx + nmu * (3.5 * uCx);
+      bCy = wCy * uIy - c + nmu * (3.5 * uCy);
     }
-    const cx0 = y0 + h * (A31 * a0 + A32 * b0);
-    const cx1 = y1 + h * (A31 * a1 + A32 * b1);
-    const cx2 = y2 + h * (A31 * a2 + A32 * b2);
-    const cx3 = y3 + h * (A31 * a3 + A32 * b3);
-    const cx4 = y4 + h * (A31 * a4 + A32 * b4);
-    // dy/dp at stage c (CushionModel.evalFast, both slipping).
+    const csIx = eIx + hA31 * aIx + hA32 * bIx;
+    const csIy = eIy + hA31 * aIy + hA32 * bIy;
+    const csCx = eCx + hA31 * aCx + hA32 * bCx;
+    const csCy = eCy + hA31 * aCy + hA32 * bCy;
+    const cv = y1 + hA31 * a1 + hA32 * b1;
+    // dy/dp and the slip rates at stage c.
     let c0: number, c1: number, c2: number, c3: number, c4: number, c5: number;
+    let cIx: number, cIy: number, cCx: number, cCy: number;
     {
-      const sx = cx0 + s * cx3 - c * cx4 - oIx;
-      const sy = -s * cx1 + cx2 - oIy;
-      const d = sx * rIx + sy * rIy;
+      const d = csIx * rIx + csIy * rIy;
       if (d < mdI) mdI = d;
-      const sr = Math.sqrt(sx * sx + sy * sy);
-      let ux = rIx;
-      let uy = rIy;
+      const sr = Math.sqrt(csIx * csIx + csIy * csIy);
+      let uIx = rIx;
+      let uIy = rIy;
       if (!(d <= 0 || sr <= epsSlip)) {
-        const ir = 1 / sr;
-        ux = sx * ir;
-        uy = sy * ir;
+        uIx = csIx / sr;
+        uIy = csIy / sr;
       }
-      const gx = nmuW * ux;
-      const gy = nmuW * uy;
-      let n = s - c * gy;
-      if (n < 0) n = 0;
-      const mu = muS * n;
-      const tx = cx0 - cx3 - oCx;
-      const ty = cx1 + cx2 - oCy;
-      const dc = tx * rCx + ty * rCy;
+      const dc = csCx * rCx + csCy * rCy;
       if (dc < mdC) mdC = dc;
-      const tr = Math.sqrt(tx * tx + ty * ty);
-      ux = rCx;
-      uy = rCy;
+      const tr = Math.sqrt(csCx * csCx + csCy * csCy);
+      let uCx = rCx;
+      let uCy = rCy;
       if (!(dc <= 0 || tr <= epsSlip)) {
-        const ir = 1 / tr;
-        ux = tx * ir;
-        uy = ty * ir;
+        uCx = csCx / tr;
+        uCy = csCy / tr;
       }
-      const hx = -mu * ux;
-      const hy = -mu * uy;
+      let nmu = kMu * uIy - muSs;
+      if (nmu > 0) nmu = 0;
+      const gx = nmuW * uIx;
+      const gy = nmuW * uIy;
+      const hx = nmu * uCx;
+      const hy = nmu * uCy;
       c0 = gx + hx;
       c1 = -c - s * gy + hy;
       c2 = 2.5 * (gy + hy);
       c3 = 2.5 * (s * gx - hx);
       c4 = -2.5 * c * gx;
-      c5 = c * cx1;
+      c5 = c * cv;
+      cIx = wIx * uIx + nmu * (zIx * uCx);
+      cIy = sc + wIy * uIy + nmu * (zIy * uCy);
+      cCx = wCx * uIx + nmu * (3.5 * uCx);
+      cCy = wCy * uIy - c + nmu * (3.5 * uCy);
     }
-    const dx0 = y0 + h * (A41 * a0 + A42 * b0 + A43 * c0);
-    const dx1 = y1 + h * (A41 * a1 + A42 * b1 + A43 * c1);
-    const dx2 = y2 + h * (A41 * a2 + A42 * b2 + A43 * c2);
-    const dx3 = y3 + h * (A41 * a3 + A42 * b3 + A43 * c3);
-    const dx4 = y4 + h * (A41 * a4 + A42 * b4 + A43 * c4);
-    // dy/dp at stage d (CushionModel.evalFast, both slipping).
+    const dsIx = eIx + hA41 * aIx + hA42 * bIx + hA43 * cIx;
+    const dsIy = eIy + hA41 * aIy + hA42 * bIy + hA43 * cIy;
+    const dsCx = eCx + hA41 * aCx + hA42 * bCx + hA43 * cCx;
+    const dsCy = eCy + hA41 * aCy + hA42 * bCy + hA43 * cCy;
+    const dv = y1 + hA41 * a1 + hA42 * b1 + hA43 * c1;
+    // dy/dp and the slip rates at stage d.
     let d0: number, d1: number, d2: number, d3: number, d4: number, d5: number;
+    let dIx: number, dIy: number, dCx: number, dCy: number;
     {
-      const sx = dx0 + s * dx3 - c * dx4 - oIx;
-      const sy = -s * dx1 + dx2 - oIy;
-      const d = sx * rIx + sy * rIy;
+      const d = dsIx * rIx + dsIy * rIy;
       if (d < mdI) mdI = d;
-      const sr = Math.sqrt(sx * sx + sy * sy);
-      let ux = rIx;
-      let uy = rIy;
+      const sr = Math.sqrt(dsIx * dsIx + dsIy * dsIy);
+      let uIx = rIx;
+      let uIy = rIy;
       if (!(d <= 0 || sr <= epsSlip)) {
-        const ir = 1 / sr;
-        ux = sx * ir;
-        uy = sy * ir;
+        uIx = dsIx / sr;
+        uIy = dsIy / sr;
       }
-      const gx = nmuW * ux;
-      const gy = nmuW * uy;
-      let n = s - c * gy;
-      if (n < 0) n = 0;
-      const mu = muS * n;
-      const tx = dx0 - dx3 - oCx;
-      const ty = dx1 + dx2 - oCy;
-      const dc = tx * rCx + ty * rCy;
+      const dc = dsCx * rCx + dsCy * rCy;
       if (dc < mdC) mdC = dc;
-      const tr = Math.sqrt(tx * tx + ty * ty);
-      ux = rCx;
-      uy = rCy;
+      const tr = Math.sqrt(dsCx * dsCx + dsCy * dsCy);
+      let uCx = rCx;
+      let uCy = rCy;
       if (!(dc <= 0 || tr <= epsSlip)) {
-        const ir = 1 / tr;
-        ux = tx * ir;
-        uy = ty * ir;
+        uCx = dsCx / tr;
+        uCy = dsCy / tr;
       }
-      const hx = -mu * ux;
-      const hy = -mu * uy;
+      let nmu = kMu * uIy - muSs;
+      if (nmu > 0) nmu = 0;
+      const gx = nmuW * uIx;
+      const gy = nmuW * uIy;
+      const hx = nmu * uCx;
+      const hy = nmu * uCy;
       d0 = gx + hx;
       d1 = -c - s * gy + hy;
       d2 = 2.5 * (gy + hy);
       d3 = 2.5 * (s * gx - hx);
       d4 = -2.5 * c * gx;
-      d5 = c * dx1;
+      d5 = c * dv;
+      dIx = wIx * uIx + nmu * (zIx * uCx);
+      dIy = sc + wIy * uIy + nmu * (zIy * uCy);
+      dCx = wCx * uIx + nmu * (3.5 * uCx);
+      dCy = wCy * uIy - c + nmu * (3.5 * uCy);
     }
-    const ex0 = y0 + h * (A51 * a0 + A52 * b0 + A53 * c0 + A54 * d0);
-    const ex1 = y1 + h * (A51 * a1 + A52 * b1 + A53 * c1 + A54 * d1);
-    const ex2 = y2 + h * (A51 * a2 + A52 * b2 + A53 * c2 + A54 * d2);
-    const ex3 = y3 + h * (A51 * a3 + A52 * b3 + A53 * c3 + A54 * d3);
-    const ex4 = y4 + h * (A51 * a4 + A52 * b4 + A53 * c4 + A54 * d4);
-    // dy/dp at stage e (CushionModel.evalFast, both slipping).
+    const esIx = eIx + hA51 * aIx + hA52 * bIx + hA53 * cIx + hA54 * dIx;
+    const esIy = eIy + hA51 * aIy + hA52 * bIy + hA53 * cIy + hA54 * dIy;
+    const esCx = eCx + hA51 * aCx + hA52 * bCx + hA53 * cCx + hA54 * dCx;
+    const esCy = eCy + hA51 * aCy + hA52 * bCy + hA53 * cCy + hA54 * dCy;
+    const ev = y1 + hA51 * a1 + hA52 * b1 + hA53 * c1 + hA54 * d1;
+    // dy/dp and the slip rates at stage e.
     let e0: number, e1: number, e2: number, e3: number, e4: number, e5: number;
+    let eeIx: number, eeIy: number, eeCx: number, eeCy: number;
     {
-      const sx = ex0 + s * ex3 - c * ex4 - oIx;
-      const sy = -s * ex1 + ex2 - oIy;
-      const d = sx * rIx + sy * rIy;
+      const d = esIx * rIx + esIy * rIy;
       if (d < mdI) mdI = d;
-      const sr = Math.sqrt(sx * sx + sy * sy);
-      let ux = rIx;
-      let uy = rIy;
+      const sr = Math.sqrt(esIx * esIx + esIy * esIy);
+      let uIx = rIx;
+      let uIy = rIy;
       if (!(d <= 0 || sr <= epsSlip)) {
-        const ir = 1 / sr;
-        ux = sx * ir;
-        uy = sy * ir;
+        uIx = esIx / sr;
+        uIy = esIy / sr;
       }
-      const gx = nmuW * ux;
-      const gy = nmuW * uy;
-      let n = s - c * gy;
-      if (n < 0) n = 0;
-      const mu = muS * n;
-      const tx = ex0 - ex3 - oCx;
-      const ty = ex1 + ex2 - oCy;
-      const dc = tx * rCx + ty * rCy;
+      const dc = esCx * rCx + esCy * rCy;
       if (dc < mdC) mdC = dc;
-      const tr = Math.sqrt(tx * tx + ty * ty);
-      ux = rCx;
-      uy = rCy;
+      const tr = Math.sqrt(esCx * esCx + esCy * esCy);
+      let uCx = rCx;
+      let uCy = rCy;
       if (!(dc <= 0 || tr <= epsSlip)) {
-        const ir = 1 / tr;
-        ux = tx * ir;
-        uy = ty * ir;
+        uCx = esCx / tr;
+        uCy = esCy / tr;
       }
-      const hx = -mu * ux;
-      const hy = -mu * uy;
+      let nmu = kMu * uIy - muSs;
+      if (nmu > 0) nmu = 0;
+      const gx = nmuW * uIx;
+      const gy = nmuW * uIy;
+      const hx = nmu * uCx;
+      const hy = nmu * uCy;
       e0 = gx + hx;
       e1 = -c - s * gy + hy;
       e2 = 2.5 * (gy + hy);
       e3 = 2.5 * (s * gx - hx);
       e4 = -2.5 * c * gx;
-      e5 = c * ex1;
+      e5 = c * ev;
+      eeIx = wIx * uIx + nmu * (zIx * uCx);
+      eeIy = sc + wIy * uIy + nmu * (zIy * uCy);
+      eeCx = wCx * uIx + nmu * (3.5 * uCx);
+      eeCy = wCy * uIy - c + nmu * (3.5 * uCy);
     }
-    const fx0 = y0 + h * (A61 * a0 + A62 * b0 + A63 * c0 + A64 * d0 + A65 * e0);
-    const fx1 = y1 + h * (A61 * a1 + A62 * b1 + A63 * c1 + A64 * d1 + A65 * e1);
-    const fx2 = y2 + h * (A61 * a2 + A62 * b2 + A63 * c2 + A64 * d2 + A65 * e2);
-    const fx3 = y3 + h * (A61 * a3 + A62 * b3 + A63 * c3 + A64 * d3 + A65 * e3);
-    const fx4 = y4 + h * (A61 * a4 + A62 * b4 + A63 * c4 + A64 * d4 + A65 * e4);
-    // dy/dp at stage f (CushionModel.evalFast, both slipping).
+    const fsIx = eIx + hA61 * aIx + hA62 * bIx + hA63 * cIx + hA64 * dIx + hA65 * eeIx;
+    const fsIy = eIy + hA61 * aIy + hA62 * bIy + hA63 * cIy + hA64 * dIy + hA65 * eeIy;
+    const fsCx = eCx + hA61 * aCx + hA62 * bCx + hA63 * cCx + hA64 * dCx + hA65 * eeCx;
+    const fsCy = eCy + hA61 * aCy + hA62 * bCy + hA63 * cCy + hA64 * dCy + hA65 * eeCy;
+    const fv = y1 + hA61 * a1 + hA62 * b1 + hA63 * c1 + hA64 * d1 + hA65 * e1;
+    // dy/dp and the slip rates at stage f.
     let f0: number, f1: number, f2: number, f3: number, f4: number, f5: number;
+    let fIx: number, fIy: number, fCx: number, fCy: number;
     {
-      const sx = fx0 + s * fx3 - c * fx4 - oIx;
-      const sy = -s * fx1 + fx2 - oIy;
-      const d = sx * rIx + sy * rIy;
+      const d = fsIx * rIx + fsIy * rIy;
       if (d < mdI) mdI = d;
-      const sr = Math.sqrt(sx * sx + sy * sy);
-      let ux = rIx;
-      let uy = rIy;
+      const sr = Math.sqrt(fsIx * fsIx + fsIy * fsIy);
+      let uIx = rIx;
+      let uIy = rIy;
       if (!(d <= 0 || sr <= epsSlip)) {
-        const ir = 1 / sr;
-        ux = sx * ir;
-        uy = sy * ir;
+        uIx = fsIx / sr;
+        uIy = fsIy / sr;
       }
-      const gx = nmuW * ux;
-      const gy = nmuW * uy;
-      let n = s - c * gy;
-      if (n < 0) n = 0;
-      const mu = muS * n;
-      const tx = fx0 - fx3 - oCx;
-      const ty = fx1 + fx2 - oCy;
-      const dc = tx * rCx + ty * rCy;
+      const dc = fsCx * rCx + fsCy * rCy;
       if (dc < mdC) mdC = dc;
-      const tr = Math.sqrt(tx * tx + ty * ty);
-      ux = rCx;
-      uy = rCy;
+      const tr = Math.sqrt(fsCx * fsCx + fsCy * fsCy);
+      let uCx = rCx;
+      let uCy = rCy;
       if (!(dc <= 0 || tr <= epsSlip)) {
-        const ir = 1 / tr;
-        ux = tx * ir;
-        uy = ty * ir;
+        uCx = fsCx / tr;
+        uCy = fsCy / tr;
       }
-      const hx = -mu * ux;
-      const hy = -mu * uy;
+      let nmu = kMu * uIy - muSs;
+      if (nmu > 0) nmu = 0;
+      const gx = nmuW * uIx;
+      const gy = nmuW * uIy;
+      const hx = nmu * uCx;
+      const hy = nmu * uCy;
       f0 = gx + hx;
       f1 = -c - s * gy + hy;
       f2 = 2.5 * (gy + hy);
       f3 = 2.5 * (s * gx - hx);
       f4 = -2.5 * c * gx;
-      f5 = c * fx1;
+      f5 = c * fv;
+      fIx = wIx * uIx + nmu * (zIx * uCx);
+      fIy = sc + wIy * uIy + nmu * (zIy * uCy);
+      fCx = wCx * uIx + nmu * (3.5 * uCx);
+      fCy = wCy * uIy - c + nmu * (3.5 * uCy);
     }
-    const x0 = y0 + h * (B1 * a0 + B3 * c0 + B4 * d0 + B5 * e0 + B6 * f0);
-    const x1 = y1 + h * (B1 * a1 + B3 * c1 + B4 * d1 + B5 * e1 + B6 * f1);
-    const x2 = y2 + h * (B1 * a2 + B3 * c2 + B4 * d2 + B5 * e2 + B6 * f2);
-    const x3 = y3 + h * (B1 * a3 + B3 * c3 + B4 * d3 + B5 * e3 + B6 * f3);
-    const x4 = y4 + h * (B1 * a4 + B3 * c4 + B4 * d4 + B5 * e4 + B6 * f4);
-    const x5 = y5 + h * (B1 * a5 + B3 * c5 + B4 * d5 + B5 * e5 + B6 * f5);
-    // dy/dp at stage g (CushionModel.evalFast, both slipping).
+    const xIx = eIx + hB1 * aIx + hB3 * cIx + hB4 * dIx + hB5 * eeIx + hB6 * fIx;
+    const xIy = eIy + hB1 * aIy + hB3 * cIy + hB4 * dIy + hB5 * eeIy + hB6 * fIy;
+    const xCx = eCx + hB1 * aCx + hB3 * cCx + hB4 * dCx + hB5 * eeCx + hB6 * fCx;
+    const xCy = eCy + hB1 * aCy + hB3 * cCy + hB4 * dCy + hB5 * eeCy + hB6 * fCy;
+    const x0 = y0 + hB1 * a0 + hB3 * c0 + hB4 * d0 + hB5 * e0 + hB6 * f0;
+    const x1 = y1 + hB1 * a1 + hB3 * c1 + hB4 * d1 + hB5 * e1 + hB6 * f1;
+    const x2 = y2 + hB1 * a2 + hB3 * c2 + hB4 * d2 + hB5 * e2 + hB6 * f2;
+    const x3 = y3 + hB1 * a3 + hB3 * c3 + hB4 * d3 + hB5 * e3 + hB6 * f3;
+    const x4 = y4 + hB1 * a4 + hB3 * c4 + hB4 * d4 + hB5 * e4 + hB6 * f4;
+    const x5 = y5 + hB1 * a5 + hB3 * c5 + hB4 * d5 + hB5 * e5 + hB6 * f5;
+    let rN = r;
+    let rcN = rc;
+    // dy/dp and the slip rates at stage g.
     let g0: number, g1: number, g2: number, g3: number, g4: number, g5: number;
+    let gIx: number, gIy: number, gCx: number, gCy: number;
     {
-      const sx = x0 + s * x3 - c * x4 - oIx;
-      const sy = -s * x1 + x2 - oIy;
-      const d = sx * rIx + sy * rIy;
+      const d = xIx * rIx + xIy * rIy;
       if (d < mdI) mdI = d;
-      const sr = Math.sqrt(sx * sx + sy * sy);
-      let ux = rIx;
-      let uy = rIy;
+      const sr = Math.sqrt(xIx * xIx + xIy * xIy);
+      let uIx = rIx;
+      let uIy = rIy;
       if (!(d <= 0 || sr <= epsSlip)) {
-        const ir = 1 / sr;
-        ux = sx * ir;
-        uy = sy * ir;
+        uIx = xIx / sr;
+        uIy = xIy / sr;
       }
-      const gx = nmuW * ux;
-      const gy = nmuW * uy;
-      let n = s - c * gy;
-      if (n < 0) n = 0;
-      const mu = muS * n;
-      const tx = x0 - x3 - oCx;
-      const ty = x1 + x2 - oCy;
-      const dc = tx * rCx + ty * rCy;
+      const dc = xCx * rCx + xCy * rCy;
       if (dc < mdC) mdC = dc;
-      const tr = Math.sqrt(tx * tx + ty * ty);
-      ux = rCx;
-      uy = rCy;
+      const tr = Math.sqrt(xCx * xCx + xCy * xCy);
+      let uCx = rCx;
+      let uCy = rCy;
       if (!(dc <= 0 || tr <= epsSlip)) {
-        const ir = 1 / tr;
-        ux = tx * ir;
-        uy = ty * ir;
+        uCx = xCx / tr;
+        uCy = xCy / tr;
       }
-      const hx = -mu * ux;
-      const hy = -mu * uy;
+      let nmu = kMu * uIy - muSs;
+      if (nmu > 0) nmu = 0;
+      const gx = nmuW * uIx;
+      const gy = nmuW * uIy;
+      const hx = nmu * uCx;
+      const hy = nmu * uCy;
       g0 = gx + hx;
       g1 = -c - s * gy + hy;
       g2 = 2.5 * (gy + hy);
       g3 = 2.5 * (s * gx - hx);
       g4 = -2.5 * c * gx;
       g5 = c * x1;
+      gIx = wIx * uIx + nmu * (zIx * uCx);
+      gIy = sc + wIy * uIy + nmu * (zIy * uCy);
+      gCx = wCx * uIx + nmu * (3.5 * uCx);
+      gCy = wCy * uIy - c + nmu * (3.5 * uCy);
+      rN = sr;
+      rcN = tr;
     }
 
     if (mdI < tol0 || mdC < tol0) {
@@ -425,29 +463,23 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
       // (CushionSolver.crossing).
       rejected++;
       let t = 0.5;
-      if (mdI < tol0) {
-        const d1 = (x0 + s * x3 - c * x4 - oIx) * rIx + (-s * x1 + x2 - oIy) * rIy;
-        t = Math.min(t, crossingFraction(ex * rIx + ey * rIy, d1));
-      }
-      if (mdC < tol0) {
-        const d1 = (x0 - x3 - oCx) * rCx + (x1 + x2 - oCy) * rCy;
-        t = Math.min(t, crossingFraction(fx * rCx + fy * rCy, d1));
-      }
+      if (mdI < tol0) t = Math.min(t, crossingFraction(eIx * rIx + eIy * rIy, xIx * rIx + xIy * rIy));
+      if (mdC < tol0) t = Math.min(t, crossingFraction(eCx * rCx + eCy * rCy, xCx * rCx + xCy * rCy));
       step = h * t;
       continue;
     }
     let err = 0;
-    const q0 = Math.abs(h * (E1 * a0 + E3 * c0 + E4 * d0 + E5 * e0 + E6 * f0 + E7 * g0)) / at;
+    const q0 = Math.abs(hE1 * a0 + hE3 * c0 + hE4 * d0 + hE5 * e0 + hE6 * f0 + hE7 * g0) * iat;
     if (q0 > err) err = q0;
-    const q1 = Math.abs(h * (E1 * a1 + E3 * c1 + E4 * d1 + E5 * e1 + E6 * f1 + E7 * g1)) / at;
+    const q1 = Math.abs(hE1 * a1 + hE3 * c1 + hE4 * d1 + hE5 * e1 + hE6 * f1 + hE7 * g1) * iat;
     if (q1 > err) err = q1;
-    const q2 = Math.abs(h * (E1 * a2 + E3 * c2 + E4 * d2 + E5 * e2 + E6 * f2 + E7 * g2)) / at;
+    const q2 = Math.abs(hE1 * a2 + hE3 * c2 + hE4 * d2 + hE5 * e2 + hE6 * f2 + hE7 * g2) * iat;
     if (q2 > err) err = q2;
-    const q3 = Math.abs(h * (E1 * a3 + E3 * c3 + E4 * d3 + E5 * e3 + E6 * f3 + E7 * g3)) / at;
+    const q3 = Math.abs(hE1 * a3 + hE3 * c3 + hE4 * d3 + hE5 * e3 + hE6 * f3 + hE7 * g3) * iat;
     if (q3 > err) err = q3;
-    const q4 = Math.abs(h * (E1 * a4 + E3 * c4 + E4 * d4 + E5 * e4 + E6 * f4 + E7 * g4)) / at;
+    const q4 = Math.abs(hE1 * a4 + hE3 * c4 + hE4 * d4 + hE5 * e4 + hE6 * f4 + hE7 * g4) * iat;
     if (q4 > err) err = q4;
-    const q5 = Math.abs(h * (E1 * a5 + E3 * c5 + E4 * d5 + E5 * e5 + E6 * f5 + E7 * g5)) / at5;
+    const q5 = Math.abs(hE1 * a5 + hE3 * c5 + hE4 * d5 + hE5 * e5 + hE6 * f5 + hE7 * g5) * iat5;
     if (q5 > err) err = q5;
     if (err > 1) {
       rejected++;
@@ -549,11 +581,17 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
     a4 = g4;
     a5 = g5;
     p += h;
-    const jx = y0 + s * y3 - c * y4 - oIx;
-    const jy = -s * y1 + y2 - oIy;
-    const kx = y0 - y3 - oCx;
-    const ky = y1 + y2 - oCy;
-    if (!(Math.sqrt(jx * jx + jy * jy) > small) || !(Math.sqrt(kx * kx + ky * ky) > small)) {
+    eIx = xIx;
+    eIy = xIy;
+    eCx = xCx;
+    eCy = xCy;
+    aIx = gIx;
+    aIy = gIy;
+    aCx = gCx;
+    aCy = gCy;
+    r = rN;
+    rc = rcN;
+    if (!(r > small) || !(rc > small)) {
       // A small slip may be zero now or become slaved: CushionSolver.settleSlips decides.
       m.minDotI = mdI;
       m.minDotC = mdC;

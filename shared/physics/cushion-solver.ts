@@ -18,7 +18,7 @@ import type { FastHost } from './cushion-fast.ts';
 import { CushionModel, SLIDE, STICK } from './cushion-model.ts';
 import type { CushionOutcome } from './cushion-types.ts';
 import {
-  errorMemory, EVENT_FRACTION, HINT_FRACTION, invRoot, MAX_STEPS, nextStep, QS_EXIT, QS_FRACTION, QS_GROW, QS_RHO, TURN_MAX,
+  errorMemory, EVENT_FRACTION, FIRST_MEMORY, HINT_FRACTION, invRoot, MAX_STEPS, nextStep, QS_EXIT, QS_FRACTION, QS_GROW, QS_RHO, TURN_MAX,
   ZERO_FRACTION,
 } from './cushion-control.ts';
 
@@ -145,11 +145,11 @@ export class CushionSolver implements FastHost {
     this.recordTrace(0, 0);
 
     let step = 0.25 * vy / c;
-    let errPrev = 1;
+    let errPrev = FIRST_MEMORY;
     for (;;) {
       if (this.fastLoop && this.trace === null && model.modeI === SLIDE && model.modeC === SLIDE &&
         !model.qsI && !model.qsC) {
-        // Both contacts slip: the inner loop takes the same steps faster (cushion-fast.ts).
+        // Both contacts slip: the inner loop takes these steps faster (cushion-fast.ts).
         this.step = step;
         this.errPrev = errPrev;
         const code = fastSteps(this, y, rk.k1);

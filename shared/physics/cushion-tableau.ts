@@ -2,7 +2,7 @@
 // "A family of embedded Runge-Kutta formulae", J. Comp. Appl. Math. 6 (1980) 19-26; dense
 // output: L. F. Shampine, "Some practical Runge-Kutta formulas", Math. Comp. 46 (1986), as given
 // by Hairer, Norsett and Wanner, "Solving ODEs I", 2nd ed., sec. II.6. Shared by the general
-// step (cushion-dopri.ts) and the inner loop (cushion-fast.ts), so both compute the same bits.
+// step (cushion-dopri.ts) and the inner loop (cushion-fast.ts, which scales it by the step).
 
 export const A21 = 1 / 5;
 export const A31 = 3 / 40;
