@@ -147,6 +147,10 @@ export class CushionSolver implements FastHost {
     let step = 0.25 * vy / c;
     let errPrev = FIRST_MEMORY;
     for (;;) {
+      if (this.fastLoop && this.trace === null && (model.qsI || model.qsC) && model.modeI === SLIDE &&
+        model.modeC === SLIDE) {
+        this.releaseGrown();
+      }
       if (this.fastLoop && this.trace === null && model.modeI === SLIDE && model.modeC === SLIDE &&
         !model.qsI && !model.qsC) {
         // Both contacts slip: the inner loop takes these steps faster (cushion-fast.ts).
@@ -393,6 +397,42 @@ export class CushionSolver implements FastHost {
     return t < 0.01 ? 0.01 : t > 0.99 ? 0.99 : t;
   }
 
+  /** A slaved contact with slip (ex, ey), |slip| = r, follows its own direction again. */
+  private release(contact: number, ex: number, ey: number, r: number): void {
+    const m = this.model;
+    if (contact === 0) m.qsI = false;
+    else m.qsC = false;
+    if (r > m.epsSlip) {
+      if (contact === 0) {
+        m.refIx = ex / r;
+        m.refIy = ey / r;
+      } else {
+        m.refCx = ex / r;
+        m.refCy = ey / r;
+      }
+    }
+  }
+
+  /**
+   * slavedStart's release of grown slaved slips, done before the inner loop is chosen: the
+   * step after a slip's onset (a natural-roll impact's second step) then runs in the inner
+   * loop instead of the general one. The same decision at the same state, so the same step.
+   */
+  private releaseGrown(): void {
+    const m = this.model;
+    const y = this.y;
+    for (let contact = 0; contact < 2; contact++) {
+      const qs = contact === 0 ? m.qsI : m.qsC;
+      if (!qs || (contact === 0 ? m.modeI : m.modeC) !== SLIDE) continue;
+      const ex = contact === 0 ? m.slipIx(y) : m.slipCx(y);
+      const ey = contact === 0 ? m.slipIy(y) : m.slipCy(y);
+      const r = Math.sqrt(ex * ex + ey * ey);
+      if (!(r > QS_EXIT * this.V)) continue;
+      const lam = contact === 0 ? m.slavedI(y) : m.slavedC(y);
+      if (!(lam === lam) || lam > 0) this.release(contact, ex, ey, r);
+    }
+  }
+
   /**
    * At a step's start, for each slaved (quasi-static) contact: re-solve its direction, let it
    * follow its own direction again if it has grown past QS_EXIT, and return the impulse step
@@ -411,17 +451,7 @@ export class CushionSolver implements FastHost {
       const r = Math.sqrt(ex * ex + ey * ey);
       if (!(lam === lam) || (lam > 0 && r > QS_EXIT * this.V)) {
         // Not available (C with I rolling) or grown: the slip follows its own direction.
-        if (contact === 0) m.qsI = false;
-        else m.qsC = false;
-        if (r > m.epsSlip) {
-          if (contact === 0) {
-            m.refIx = ex / r;
-            m.refIy = ey / r;
-          } else {
-            m.refCx = ex / r;
-            m.refCy = ey / r;
-          }
-        }
+        this.release(contact, ex, ey, r);
         continue;
       }
       if (contact === 0) {
