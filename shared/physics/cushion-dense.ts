@@ -9,22 +9,29 @@ import { D1, D3, D4, D5, D6, D7 } from './cushion-tableau.ts';
 export const DENSE_STRIDE = 5;
 
 /**
- * The extension of a step of size h from y to y1 with stage derivatives k1, k3..k7 (k2 has no
- * weight), for the first y.length variables, into `out`.
+ * The extension of one variable over a step of size h from y0 to y1 with stage derivatives
+ * k1, k3..k7 (k2 has no weight), into out[o .. o + 4].
  */
+export function denseVariable(
+  out: Float64Array, o: number, h: number, y0: number, y1: number,
+  k1: number, k3: number, k4: number, k5: number, k6: number, k7: number,
+): void {
+  const dy = y1 - y0;
+  const b = h * k1 - dy;
+  out[o] = y0;
+  out[o + 1] = dy;
+  out[o + 2] = b;
+  out[o + 3] = dy - h * k7 - b;
+  out[o + 4] = h * (D1 * k1 + D3 * k3 + D4 * k4 + D5 * k5 + D6 * k6 + D7 * k7);
+}
+
+/** denseVariable for the first y.length variables, from arrays. */
 export function fillDense(
   out: Float64Array, h: number, y: Float64Array, y1: Float64Array,
   k1: Float64Array, k3: Float64Array, k4: Float64Array, k5: Float64Array, k6: Float64Array, k7: Float64Array,
 ): void {
   for (let i = 0; i < y.length; i++) {
-    const dy = y1[i]! - y[i]!;
-    const b = h * k1[i]! - dy;
-    const o = DENSE_STRIDE * i;
-    out[o] = y[i]!;
-    out[o + 1] = dy;
-    out[o + 2] = b;
-    out[o + 3] = dy - h * k7[i]! - b;
-    out[o + 4] = h * (D1 * k1[i]! + D3 * k3[i]! + D4 * k4[i]! + D5 * k5[i]! + D6 * k6[i]! + D7 * k7[i]!);
+    denseVariable(out, DENSE_STRIDE * i, h, y[i]!, y1[i]!, k1[i]!, k3[i]!, k4[i]!, k5[i]!, k6[i]!, k7[i]!);
   }
 }
 

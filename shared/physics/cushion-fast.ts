@@ -17,7 +17,7 @@ import {
   A21, A31, A32, A41, A42, A43, A51, A52, A53, A54, A61, A62, A63, A64, A65, B1, B3, B4, B5, B6,
   E1, E3, E4, E5, E6, E7,
 } from './cushion-tableau.ts';
-import { denseRoot, denseValue, fillDense } from './cushion-dense.ts';
+import { denseRoot, denseValue, denseVariable } from './cushion-dense.ts';
 
 /** What the general loop does next (the return value of fastSteps). */
 export const FAST_GENERAL = 0;
@@ -55,20 +55,8 @@ export interface FastHost {
   innerSteps: number;
 }
 
-// For the continuous extension of a step: its stage derivatives k1..k7 (6 values each, k2
-// unused), the states at its start and end, and the extension (5 coefficients per variable).
-const K = new Float64Array(42);
-const K1 = K.subarray(0, 6);
-const K3 = K.subarray(12, 18);
-const K4 = K.subarray(18, 24);
-const K5 = K.subarray(24, 30);
-const K6 = K.subarray(30, 36);
-const K7 = K.subarray(36, 42);
-const Y0 = new Float64Array(6);
-const Y1 = new Float64Array(6);
+// The continuous extension of a step (5 coefficients per variable, cushion-dense.ts).
 const Q = new Float64Array(30);
-// A state on the extension.
-const D = new Float64Array(6);
 
 /**
  * Runs the general loop's iterations while both contacts slip and no slip is slaved, from the
@@ -86,6 +74,7 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
   const muSs = muS * s;
   const kMu = -(muS * c * m.muW);
   const sc = s * c;
+  const pushesOut = s * m.muW + muS * (s + c * m.muW) < c;
   const wIx = -3.5 * m.muW;
   const zIx = 1 - 2.5 * s;
   const wIy = -(s * s + 2.5) * m.muW;
@@ -490,53 +479,53 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
     // Accepted: end of compression and the work target on the continuous extension.
     let endAt = -1;
     let from = 0;
-    if ((!restitution && x1 <= 0) || (restitution && x5 <= wEnd)) {
-      // The continuous extension of this step (Dopri5.prepareDense), into Q.
-      Y0[0] = y0; Y0[1] = y1; Y0[2] = y2; Y0[3] = y3; Y0[4] = y4; Y0[5] = y5;
-      Y1[0] = x0; Y1[1] = x1; Y1[2] = x2; Y1[3] = x3; Y1[4] = x4; Y1[5] = x5;
-      K[0] = a0; K[1] = a1; K[2] = a2; K[3] = a3; K[4] = a4; K[5] = a5;
-      K[12] = c0; K[13] = c1; K[14] = c2; K[15] = c3; K[16] = c4; K[17] = c5;
-      K[18] = d0; K[19] = d1; K[20] = d2; K[21] = d3; K[22] = d4; K[23] = d5;
-      K[24] = e0; K[25] = e1; K[26] = e2; K[27] = e3; K[28] = e4; K[29] = e5;
-      K[30] = f0; K[31] = f1; K[32] = f2; K[33] = f3; K[34] = f4; K[35] = f5;
-      K[36] = g0; K[37] = g1; K[38] = g2; K[39] = g3; K[40] = g4; K[41] = g5;
-      fillDense(Q, h, Y0, Y1, K1, K3, K4, K5, K6, K7);
+    const compressionEnds = !restitution && x1 <= 0;
+    if (compressionEnds || (restitution && x5 <= wEnd)) {
+      // The continuous extension of this step (Dopri5.prepareDense) of vy and the work.
+      denseVariable(Q, 5, h, y1, x1, a1, c1, d1, e1, f1, g1);
+      denseVariable(Q, 25, h, y5, x5, a5, c5, d5, e5, f5, g5);
     }
-    if (!restitution && x1 <= 0) {
+    if (compressionEnds) {
       from = denseRoot(Q, 1, 0, 0, 1);
-      denseAll(from);
-      const v0 = D[0]!;
-      const v1 = D[1]!;
-      const v2 = D[2]!;
-      const v3 = D[3]!;
-      const v4 = D[4]!;
-      const wc = D[5]!;
+      const wc = denseValue(Q, 5, from);
       // A slip at zero together with vy (CushionSolver.slipAtZero), or an impact that stalls:
-      // the general loop takes this iteration again.
+      // the general loop takes this iteration again. A slip whose component along the step's
+      // starting direction stayed above 1e3 event bands at every stage cannot be at zero at
+      // vy = 0, and with μw sinθ + μs (sinθ + μw cosθ) < cosθ the impulse always pushes the
+      // ball out (dvy/dp < 0): the common case needs neither check.
       const lim = 10 * epsEv;
-      const ix = v0 + s * v3 - c * v4 - oIx;
-      const iy = -s * v1 + v2 - oIy;
-      const cx = v0 - v3 - oCx;
-      const cy = v1 + v2 - oCy;
-      if (ix * ix + iy * iy <= lim * lim || cx * cx + cy * cy <= lim * lim) {
-        steps--;
-        break;
-      }
-      // dvy/dp there (CushionModel.derivative outside a step; it also lowers the smallest
-      // slip components along the step's directions).
-      const dI = ix * rIx + iy * rIy;
-      if (dI < mdI) mdI = dI;
-      const dC = cx * rCx + cy * rCy;
-      if (dC < mdC) mdC = dC;
-      const irI = 1 / Math.sqrt(ix * ix + iy * iy);
-      const gy = nmuW * (iy * irI);
-      let n = s - c * gy;
-      if (n < 0) n = 0;
-      const irC = 1 / Math.sqrt(cx * cx + cy * cy);
-      const dvy = -c - s * gy + -(muS * n) * (cy * irC);
-      if (ee2 !== 0 && !(dvy < 0)) {
-        steps--;
-        break;
+      if (!(mdI > 1e3 * lim && mdC > 1e3 * lim) || (ee2 !== 0 && !pushesOut)) {
+        denseRest(h, y0, y2, y3, y4, x0, x2, x3, x4, a0, a2, a3, a4, c0, c2, c3, c4, d0, d2, d3, d4, e0, e2, e3, e4,
+          f0, f2, f3, f4, g0, g2, g3, g4);
+        const v0 = denseValue(Q, 0, from);
+        const v1 = denseValue(Q, 1, from);
+        const v2 = denseValue(Q, 2, from);
+        const v3 = denseValue(Q, 3, from);
+        const v4 = denseValue(Q, 4, from);
+        const ix = v0 + s * v3 - c * v4 - oIx;
+        const iy = -s * v1 + v2 - oIy;
+        const cx = v0 - v3 - oCx;
+        const cy = v1 + v2 - oCy;
+        if (ix * ix + iy * iy <= lim * lim || cx * cx + cy * cy <= lim * lim) {
+          steps--;
+          break;
+        }
+        // dvy/dp there (CushionModel.derivative outside a step; it also lowers the smallest
+        // slip components along the step's directions).
+        const dI = ix * rIx + iy * rIy;
+        if (dI < mdI) mdI = dI;
+        const dC = cx * rCx + cy * rCy;
+        if (dC < mdC) mdC = dC;
+        const irI = 1 / Math.sqrt(ix * ix + iy * iy);
+        const gy = nmuW * (iy * irI);
+        let n = s - c * gy;
+        if (n < 0) n = 0;
+        const irC = 1 / Math.sqrt(cx * cx + cy * cy);
+        const dvy = -c - s * gy + -(muS * n) * (cy * irC);
+        if (ee2 !== 0 && !(dvy < 0)) {
+          steps--;
+          break;
+        }
       }
       wEnd = wc - ee2 * wc;
       restitution = true;
@@ -552,8 +541,9 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
     }
     if (endAt >= 0) {
       if (endAt < 1) {
-        denseAll(endAt);
-        for (let i = 0; i < 6; i++) y[i] = D[i]!;
+        denseRest(h, y0, y2, y3, y4, x0, x2, x3, x4, a0, a2, a3, a4, c0, c2, c3, c4, d0, d2, d3, d4, e0, e2, e3, e4,
+          f0, f2, f3, f4, g0, g2, g3, g4);
+        for (let i = 0; i < 6; i++) y[i] = denseValue(Q, i, endAt);
       } else {
         y[0] = x0;
         y[1] = x1;
@@ -640,9 +630,15 @@ function crossingFraction(d0: number, d1: number): number {
   return t < 0.01 ? 0.01 : t > 0.99 ? 0.99 : t;
 }
 
-// Returns through a typed array: a call V8 does not inline boxes every double it returns.
-
-/** The continuous extension at fraction theta of the step, all variables, into D (Dopri5.denseAll). */
-function denseAll(theta: number): void {
-  for (let i = 0; i < 6; i++) D[i] = denseValue(Q, i, theta);
+/** The extension of vx, R ωx, R ωy and R ωz (vy and the work are filled first), into Q. */
+function denseRest(
+  h: number, y0: number, y2: number, y3: number, y4: number, x0: number, x2: number, x3: number, x4: number,
+  a0: number, a2: number, a3: number, a4: number, c0: number, c2: number, c3: number, c4: number,
+  d0: number, d2: number, d3: number, d4: number, e0: number, e2: number, e3: number, e4: number,
+  f0: number, f2: number, f3: number, f4: number, g0: number, g2: number, g3: number, g4: number,
+): void {
+  denseVariable(Q, 0, h, y0, x0, a0, c0, d0, e0, f0, g0);
+  denseVariable(Q, 10, h, y2, x2, a2, c2, d2, e2, f2, g2);
+  denseVariable(Q, 15, h, y3, x3, a3, c3, d3, e3, f3, g3);
+  denseVariable(Q, 20, h, y4, x4, a4, c4, d4, e4, f4, g4);
 }
