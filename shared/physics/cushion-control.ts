@@ -31,6 +31,16 @@ export const QS_EXIT = 1e-5;
 export const QS_GROW = 0.1;
 /** Largest turn of a slip direction in one step (radians), predicted from its rate. */
 export const TURN_MAX = 0.5;
+/**
+ * Largest step, times a sliding slip's relaxation rate. Near its equilibrium direction a small
+ * slip turns back toward it at about k / |slip| per unit impulse (k = 7/2 μw at I, 7/2 μs × the
+ * table's normal at C: the friction's weight in the slip's own rates); an explicit step longer
+ * than about 3.3 / that rate oscillates about it instead (the Dormand-Prince pair's stability
+ * limit on the real axis), and the error estimate, seeing a bounded wobble, may let it. Found on
+ * a pool impact whose cushion slip left a stuck spell slowly: 1.1e-5 V0 wrong at 1e-6 without
+ * this bound.
+ */
+export const RELAX_MAX = 2;
 
 /**
  * The step after an accepted one of size `step` and error `err`, with `prev` the previous

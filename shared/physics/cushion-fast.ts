@@ -11,7 +11,7 @@
 // slaved slip or a stalled ending is handed back to the general loop at the start of the
 // iteration that needs it, or right after a step when a slip has become small. Equations: cushion-model.ts (Mathavan et al. 2010,
 // eq. 14 with both contacts slipping).
-import { errorMemory, invRoot, MAX_STEPS, nextStep, QS_RHO, TURN_MAX } from './cushion-control.ts';
+import { errorMemory, invRoot, MAX_STEPS, nextStep, QS_RHO, RELAX_MAX, TURN_MAX } from './cushion-control.ts';
 import type { CushionModel } from './cushion-model.ts';
 import {
   A21, A31, A32, A41, A42, A43, A51, A52, A53, A54, A61, A62, A63, A64, A65, B1, B3, B4, B5, B6,
@@ -32,6 +32,9 @@ export const FAST_SETTLE = 2;
 /** The solver state the inner loop reads and advances (CushionSolver implements it). */
 export interface FastHost {
   readonly model: CushionModel;
+  /** How fast each sliding slip's direction relaxes, times its speed (RELAX_MAX). */
+  readonly relaxI: number;
+  readonly relaxC: number;
   /** Slip speed counted as zero, and the speed of the impact. */
   readonly epsEv: number;
   readonly V: number;
@@ -87,6 +90,8 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
   const oCx = m.offCx;
   const oCy = m.offCy;
   const epsEv = host.epsEv;
+  const relaxI = host.relaxI;
+  const relaxC = host.relaxC;
   const tol0 = -epsEv;
   const small = QS_RHO * host.V;
   const iat = 1 / host.atolV;
@@ -135,12 +140,14 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
     if (rate < 0 && r <= -rate * h) h = -r / rate;
     let turn = Math.abs(aIx * eIy - aIy * eIx) / r;
     if (turn * h > TURN_MAX * r) h = TURN_MAX * r / turn;
+    if (relaxI * h > RELAX_MAX * r) h = RELAX_MAX * r / relaxI;
     const rCx = eCx / rc;
     const rCy = eCy / rc;
     rate = (eCx * aCx + eCy * aCy) / rc;
     if (rate < 0 && rc <= -rate * h) h = -rc / rate;
     turn = Math.abs(aCx * eCy - aCy * eCx) / rc;
     if (turn * h > TURN_MAX * rc) h = TURN_MAX * rc / turn;
+    if (relaxC * h > RELAX_MAX * rc) h = RELAX_MAX * rc / relaxC;
 
     // One Dormand-Prince step. The tableau is scaled by the step, so that a stage's newest
     // term costs one product and one sum on the way to the next stage; the slips are stepped

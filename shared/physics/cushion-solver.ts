@@ -18,7 +18,8 @@ import type { FastHost } from './cushion-fast.ts';
 import { CushionModel, SLIDE, STICK } from './cushion-model.ts';
 import type { CushionOutcome } from './cushion-types.ts';
 import {
-  errorMemory, EVENT_FRACTION, FIRST_MEMORY, HINT_FRACTION, invRoot, MAX_STEPS, nextStep, QS_EXIT, QS_FRACTION, QS_GROW, QS_RHO, TURN_MAX,
+  errorMemory, EVENT_FRACTION, FIRST_MEMORY, HINT_FRACTION, invRoot, MAX_STEPS, nextStep, QS_EXIT, QS_FRACTION, QS_GROW, QS_RHO, RELAX_MAX,
+  TURN_MAX,
   ZERO_FRACTION,
 } from './cushion-control.ts';
 
@@ -72,6 +73,9 @@ export class CushionSolver implements FastHost {
   lastErr = -0;
   rI0 = -0;
   rC0 = -0;
+  /** How fast a sliding slip's direction relaxes, times its speed (see RELAX_MAX): I, C. */
+  relaxI = -0;
+  relaxC = -0;
   /** Whether the inner loop for two slipping contacts is used (off only to test it). */
   fastLoop = true;
   innerSteps = 0;
@@ -123,6 +127,8 @@ export class CushionSolver implements FastHost {
     this.atolW = atol[5]!;
     this.epsEv = EVENT_FRACTION * at;
     model.epsSlip = HINT_FRACTION * V;
+    this.relaxI = 3.5 * muW;
+    this.relaxC = 3.5 * muS * (s + c * muW);
     this.p = 0;
     this.restitution = false;
     this.wEnd = 0;
@@ -193,7 +199,7 @@ export class CushionSolver implements FastHost {
         if (r > model.epsSlip) {
           model.refIx = ex / r;
           model.refIy = ey / r;
-          step = this.limitBySlip(ex, ey, r, model.rateIx(rk.k1), model.rateIy(rk.k1), step);
+          step = this.limitBySlip(ex, ey, r, model.rateIx(rk.k1), model.rateIy(rk.k1), step, this.relaxI);
         } else {
           model.refIx = model.hintIx;
           model.refIy = model.hintIy;
@@ -206,7 +212,7 @@ export class CushionSolver implements FastHost {
         if (r > model.epsSlip) {
           model.refCx = ex / r;
           model.refCy = ey / r;
-          step = this.limitBySlip(ex, ey, r, model.rateCx(rk.k1), model.rateCy(rk.k1), step);
+          step = this.limitBySlip(ex, ey, r, model.rateCx(rk.k1), model.rateCy(rk.k1), step, this.relaxC);
         } else {
           model.refCx = model.hintCx;
           model.refCy = model.hintCy;
@@ -572,11 +578,14 @@ export class CushionSolver implements FastHost {
    * TURN_MAX radians (a small slip turns fast, and the error estimate is blind to a turn much
    * faster than the step).
    */
-  private limitBySlip(ex: number, ey: number, r: number, rx: number, ry: number, step: number): number {
+  private limitBySlip(
+    ex: number, ey: number, r: number, rx: number, ry: number, step: number, relax: number,
+  ): number {
     const rate = (ex * rx + ey * ry) / r;
     if (rate < 0 && r <= -rate * step) step = -r / rate;
     const turn = Math.abs(rx * ey - ry * ex) / r;
     if (turn * step > TURN_MAX * r) step = TURN_MAX * r / turn;
+    if (relax * step > RELAX_MAX * r) step = RELAX_MAX * r / relax;
     return step;
   }
 
