@@ -220,6 +220,12 @@ export class CushionSolver implements FastHost {
       }
       model.minDotI = Infinity;
       model.minDotC = Infinity;
+      const slavedI = model.qsI && model.modeI === SLIDE;
+      const slavedC = model.qsC && model.modeC === SLIDE;
+      const uIx = model.hintIx;
+      const uIy = model.hintIy;
+      const uCx = model.hintCx;
+      const uCy = model.hintCy;
       model.stepping = true;
       const fm = model.fastMode();
       if (fm >= 0) rk.stepFast(model, fm, y, step, atol);
@@ -241,6 +247,18 @@ export class CushionSolver implements FastHost {
         this.rejected++;
         step *= Math.max(0.2, 0.9 * invRoot(err));
         continue;
+      }
+      if (slavedI || slavedC) {
+        // What slaving neglects, which the error estimate cannot see: the slip lags its slaved
+        // direction by about (its turn) × (the slip's relaxation time), so the friction's
+        // direction is off by that much, about |slip| × turn / (5/2) over the step (5/2 the
+        // smallest weight of the friction in the slip's own rates). Bounded like a step error.
+        const qe = this.slavingError(slavedI, slavedC, uIx, uIy, uCx, uCy);
+        if (qe > tolV) {
+          this.rejected++;
+          step *= Math.max(0.2, 0.9 * Math.sqrt(tolV / qe));
+          continue;
+        }
       }
 
       // Accepted. Events located on the continuous extension, in order.
@@ -401,6 +419,35 @@ export class CushionSolver implements FastHost {
     if (!(d0 > 0 && d1 < 0)) return 0.5;
     const t = d0 / (d0 - d1);
     return t < 0.01 ? 0.01 : t > 0.99 ? 0.99 : t;
+  }
+
+  /**
+   * For the slaved contacts of the step just taken (their slaved directions at its start given):
+   * the largest |slip at the end| × turn of the slaved direction / (5/2), the part of the motion
+   * slaving neglects over the step.
+   */
+  private slavingError(
+    slavedI: boolean, slavedC: boolean, uIx: number, uIy: number, uCx: number, uCy: number,
+  ): number {
+    const m = this.model;
+    const y1 = this.rk.y1;
+    let worst = 0;
+    if (slavedI && m.qsI) {
+      const ex = m.slipIx(y1);
+      const ey = m.slipIy(y1);
+      const dx = m.hintIx - uIx;
+      const dy = m.hintIy - uIy;
+      worst = Math.sqrt((ex * ex + ey * ey) * (dx * dx + dy * dy)) / 2.5;
+    }
+    if (slavedC && m.qsC) {
+      const ex = m.slipCx(y1);
+      const ey = m.slipCy(y1);
+      const dx = m.hintCx - uCx;
+      const dy = m.hintCy - uCy;
+      const e = Math.sqrt((ex * ex + ey * ey) * (dx * dx + dy * dy)) / 2.5;
+      if (e > worst) worst = e;
+    }
+    return worst;
   }
 
   /** A slaved contact with slip (ex, ey), |slip| = r, follows its own direction again. */

@@ -98,6 +98,17 @@ describe('accuracy against the converged reference (default setting)', () => {
     expect(relError(cushionRebound(s, params), r, params.R, V0)).toBeLessThan(2e-6);
   });
 
+  it('slaving is bounded by the turn of the slaved direction over a step (regression: 7.7e-6 V0 off)', () => {
+    // Pool constants: the cushion contact leaves a long stuck spell near the end of the impact
+    // and slips from zero, slaved; one step of 0.5 m/s carried it to 4e-3 V0 while its slaved
+    // direction turned, and the slip's lag behind it went unseen.
+    const params = TABLE_PARAMS[1]![1];
+    const V0 = 2.533;
+    const s = paperState(V0, 40.39592477989197, -0.14734662132263182, 0.6860342777252197, params.R);
+    const r = referenceRebound(s, params).state;
+    expect(relError(cushionRebound(s, params), r, params.R, V0)).toBeLessThan(2e-6);
+  });
+
   it('the model is homogeneous in the speeds: a slow impact is a scaled fast one', () => {
     for (const [alpha, kT, kS] of [[30, 1, 0], [80, -1, 2], [60, 2, -1]] as const) {
       const a = cushionRebound(paperState(1, alpha, kT, kS, PAPER.R), PAPER);
