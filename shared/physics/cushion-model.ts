@@ -582,6 +582,10 @@ export class CushionModel {
     const s = this.s;
     const c = this.c;
     const f = c / (1 + s);
+    // A rolling contact is never slaved (a stale flag made slavedStart aim a rolling contact's
+    // residual at zero again and again, with steps too small to move p).
+    this.qsI = false;
+    this.qsC = false;
     if (f <= this.muW && f <= this.muS) {
       this.modeI = STICK;
       this.modeC = STICK;

@@ -497,7 +497,7 @@ export class CushionSolver implements FastHost {
     let d = Infinity;
     for (let contact = 0; contact < 2; contact++) {
       const qs = contact === 0 ? m.qsI : m.qsC;
-      if (!qs) continue;
+      if (!qs || (contact === 0 ? m.modeI : m.modeC) !== SLIDE) continue;
       const lam = contact === 0 ? m.slavedI(y) : m.slavedC(y);
       const ex = contact === 0 ? m.slipIx(y) : m.slipCx(y);
       const ey = contact === 0 ? m.slipIy(y) : m.slipCy(y);

@@ -191,6 +191,22 @@ describe('an impact whose restitution can never reach its target', () => {
       }
     }
   });
+
+  it('a contact decided rolling is never aimed at zero again (regression: a loop of steps too small to move)', () => {
+    // μw 0.5 at the paper's height: both slips reach zero together, the table contact rolls and
+    // the cushion contact slips on; a stale slaving flag on the rolling contact made every step
+    // aim its 4e-22 m/s residual at zero with a step of 1e-21, which did not move p, until the
+    // step cap threw.
+    for (const [muS, ee] of [[0.8, 0.5], [2, 0.98]] as const) {
+      const params = { ...PAPER, muW: 0.5, muS, ee };
+      const s = paperState(1, 60, 1, 0, R);
+      const k = cushionImpact(s, params);
+      expect(k.steps).toBeLessThan(MAX_STEPS / 20);
+      const r = referenceRebound(s, params);
+      expect(k.outcome).toBe(r.outcome);
+      expect(relError(k.state, r.state, R, 1)).toBeLessThan(1e-5);
+    }
+  });
 });
 
 describe('no impact and bad input', () => {
