@@ -25,6 +25,13 @@ export const HINT_FRACTION = 1e-14;
  * at the default); 1e-3 changes nothing else on the test sets.
  */
 export const QS_RHO = 1e-3;
+/**
+ * A sliding slip up to this fraction of the speed whose rates are negligible (it would change
+ * by less than the event tolerance over an impulse of V) is held in its direction
+ * (CushionModel.frozenI): it stays put, and integrating its stiff direction would take steps of
+ * a fraction of it, without end.
+ */
+export const QS_HOLD_RHO = 1e-1;
 export const QS_FRACTION = 0.1;
 export const QS_EXIT = 1e-5;
 /**

@@ -68,6 +68,12 @@ export class CushionModel {
    */
   qsI = false;
   qsC = false;
+  /**
+   * A slaved contact whose slip has stopped changing (its rates vanish along its direction, as
+   * at the both-rolling threshold of friction): its direction is held, not re-solved.
+   */
+  frozenI = false;
+  frozenC = false;
   /** Direction used while a slipping contact's (slip - offset) is below epsSlip (onset). */
   hintIx = 1.5;
   hintIy = -0;
@@ -115,6 +121,8 @@ export class CushionModel {
     this.hintCy = 0;
     this.qsI = false;
     this.qsC = false;
+    this.frozenI = false;
+    this.frozenC = false;
   }
 
   /** Effective slip at I (slip minus offset). */
@@ -159,7 +167,7 @@ export class CushionModel {
     let n: number;
     if (this.modeI === SLIDE) {
       if (this.qsI) {
-        if (!this.qsC || this.modeC === STICK) {
+        if (!this.frozenI && (!this.qsC || this.modeC === STICK)) {
           // Slaved: the direction I's rates enforce at this very state.
           this.affineAt(vx, vy, ox, oy);
           this.onsetDirection(this.ax, this.ay, this.b11, this.b12, this.b22, true);
@@ -182,7 +190,7 @@ export class CushionModel {
           const ax = (1 - 2.5 * s) * gx;
           const ay = -c + (2.5 - s) * gy;
           const an = Math.sqrt(ax * ax + ay * ay);
-          if (an > 0) {
+          if (an > 0 && !this.frozenC) {
             this.hintCx = ax / an;
             this.hintCy = ay / an;
           }
@@ -439,6 +447,7 @@ export class CushionModel {
     const n = this.nC > 0 ? this.nC : 0;
     const norm = Math.sqrt(hx * hx + hy * hy);
     this.qsC = false;
+    this.frozenC = false;
     if (norm <= this.muS * n) return true;
     this.modeC = SLIDE;
     this.qsC = true;
@@ -459,6 +468,7 @@ export class CushionModel {
     this.friction(y[0]!, y[1]!, y[2]!, y[3]!, y[4]!);
     // The rolling branch exists only while its denominator is positive, i.e. nC > 0.
     this.qsI = false;
+    this.frozenI = false;
     if (this.nC > 0 && this.gx * this.gx + this.gy * this.gy <= this.muW * this.muW) return true;
     this.modeI = SLIDE;
     this.qsI = true;
@@ -586,6 +596,8 @@ export class CushionModel {
     // residual at zero again and again, with steps too small to move p).
     this.qsI = false;
     this.qsC = false;
+    this.frozenI = false;
+    this.frozenC = false;
     if (f <= this.muW && f <= this.muS) {
       this.modeI = STICK;
       this.modeC = STICK;

@@ -18,7 +18,7 @@ import type { FastHost } from './cushion-fast.ts';
 import { CushionModel, SLIDE, STICK } from './cushion-model.ts';
 import type { CushionOutcome } from './cushion-types.ts';
 import {
-  errorMemory, EVENT_FRACTION, FIRST_MEMORY, HINT_FRACTION, invRoot, MAX_STEPS, nextStep, QS_EXIT, QS_FRACTION, QS_GROW, QS_RHO, RELAX_MAX,
+  errorMemory, EVENT_FRACTION, FIRST_MEMORY, HINT_FRACTION, invRoot, MAX_STEPS, nextStep, QS_EXIT, QS_FRACTION, QS_GROW, QS_HOLD_RHO, QS_RHO, RELAX_MAX,
   TURN_MAX,
   ZERO_FRACTION,
 } from './cushion-control.ts';
@@ -450,11 +450,54 @@ export class CushionSolver implements FastHost {
     return worst;
   }
 
+  /** Contact 0 (I) or 1 (C) slips on, held in direction (ux, uy) (CushionModel.frozenI). */
+  private hold(contact: number, ux: number, uy: number): void {
+    const m = this.model;
+    if (contact === 0) {
+      m.qsI = true;
+      m.frozenI = true;
+      m.hintIx = ux;
+      m.hintIy = uy;
+    } else {
+      m.qsC = true;
+      m.frozenC = true;
+      m.hintCx = ux;
+      m.hintCy = uy;
+    }
+  }
+
+  /**
+   * The impulse (per unit mass) over which a held slip's neglected rate could act: V, or in
+   * restitution the impulse the work still needs at the current vy, if longer (a creep near
+   * the both-rolling threshold can need a hundred times the usual impulse).
+   */
+  private holdSpan(): number {
+    const vy = this.y[1]!;
+    if (this.restitution && vy < 0) {
+      const left = (this.y[5]! - this.wEnd) / (this.model.c * -vy);
+      if (left > this.V) return left;
+    }
+    return this.V;
+  }
+
+  /** |rate| of contact 0 (I) or 1 (C)'s slip from a derivative vector k. */
+  private rateSpeed(contact: number, k: Float64Array): number {
+    const m = this.model;
+    const rx = contact === 0 ? m.rateIx(k) : m.rateCx(k);
+    const ry = contact === 0 ? m.rateIy(k) : m.rateCy(k);
+    return Math.sqrt(rx * rx + ry * ry);
+  }
+
   /** A slaved contact with slip (ex, ey), |slip| = r, follows its own direction again. */
   private release(contact: number, ex: number, ey: number, r: number): void {
     const m = this.model;
-    if (contact === 0) m.qsI = false;
-    else m.qsC = false;
+    if (contact === 0) {
+      m.qsI = false;
+      m.frozenI = false;
+    } else {
+      m.qsC = false;
+      m.frozenC = false;
+    }
     if (r > m.epsSlip) {
       if (contact === 0) {
         m.refIx = ex / r;
@@ -476,7 +519,7 @@ export class CushionSolver implements FastHost {
     const y = this.y;
     for (let contact = 0; contact < 2; contact++) {
       const qs = contact === 0 ? m.qsI : m.qsC;
-      if (!qs || (contact === 0 ? m.modeI : m.modeC) !== SLIDE) continue;
+      if (!qs || (contact === 0 ? m.modeI : m.modeC) !== SLIDE || (contact === 0 ? m.frozenI : m.frozenC)) continue;
       const ex = contact === 0 ? m.slipIx(y) : m.slipCx(y);
       const ey = contact === 0 ? m.slipIy(y) : m.slipCy(y);
       const r = Math.sqrt(ex * ex + ey * ey);
@@ -498,6 +541,24 @@ export class CushionSolver implements FastHost {
     for (let contact = 0; contact < 2; contact++) {
       const qs = contact === 0 ? m.qsI : m.qsC;
       if (!qs || (contact === 0 ? m.modeI : m.modeC) !== SLIDE) continue;
+      if (contact === 0 ? m.frozenI : m.frozenC) {
+        // A held slip stays held while its rates stay negligible (with a margin of ten).
+        const ex = contact === 0 ? m.slipIx(y) : m.slipCx(y);
+        const ey = contact === 0 ? m.slipIy(y) : m.slipCy(y);
+        const k1 = this.rk.k1;
+        if (this.rateSpeed(contact, k1) * this.holdSpan() > 10 * this.epsEv) this.release(contact, ex, ey, Math.sqrt(ex * ex + ey * ey));
+        continue;
+      }
+      {
+        // A slaved slip whose rates have vanished is held where it is (see slaveSmallSlips).
+        const ex = contact === 0 ? m.slipIx(y) : m.slipCx(y);
+        const ey = contact === 0 ? m.slipIy(y) : m.slipCy(y);
+        const r = Math.sqrt(ex * ex + ey * ey);
+        if (r > m.epsSlip && r <= QS_HOLD_RHO * this.V && this.rateSpeed(contact, this.rk.k1) * this.holdSpan() <= this.epsEv) {
+          this.hold(contact, ex / r, ey / r);
+          continue;
+        }
+      }
       const lam = contact === 0 ? m.slavedI(y) : m.slavedC(y);
       const ex = contact === 0 ? m.slipIx(y) : m.slipCx(y);
       const ey = contact === 0 ? m.slipIy(y) : m.slipCy(y);
@@ -529,6 +590,8 @@ export class CushionSolver implements FastHost {
           } else {
             if (contact === 0) m.qsI = false;
             else m.qsC = false;
+            m.frozenI = m.frozenI && contact !== 0;
+            m.frozenC = m.frozenC && contact !== 1;
             if (r > m.epsSlip) {
               if (contact === 0) {
                 m.refIx = ex / r;
@@ -570,6 +633,14 @@ export class CushionSolver implements FastHost {
       const ex = contact === 0 ? m.slipIx(y) : m.slipCx(y);
       const ey = contact === 0 ? m.slipIy(y) : m.slipCy(y);
       const r = Math.sqrt(ex * ex + ey * ey);
+      if (r > m.epsSlip && r <= QS_HOLD_RHO * this.V && this.rateSpeed(contact, this.rk.k1) * this.holdSpan() <= this.epsEv) {
+        // Its rates vanish along its own direction (friction at the both-rolling threshold): the
+        // slip stays as it is, and is stiff however long it stays. Held in its direction, it
+        // costs no steps; released as soon as its rates grow (slavedStart).
+        this.hold(contact, ex / r, ey / r);
+        changed = true;
+        continue;
+      }
       if (!(r <= QS_RHO * this.V) || !(r > 0)) continue;
       const lam = contact === 0 ? m.slavedI(y) : m.slavedC(y);
       if (!(lam === lam)) continue;
@@ -678,6 +749,7 @@ export class CushionSolver implements FastHost {
       const n = Math.sqrt(m.gx * m.gx + m.gy * m.gy);
       m.modeI = SLIDE;
       m.qsI = true;
+      m.frozenI = false;
       m.offIx = y[0]! + m.s * y[3]! - m.c * y[4]!;
       m.offIy = -m.s * y[1]! + y[2]!;
       if (n > 0) {
@@ -688,6 +760,7 @@ export class CushionSolver implements FastHost {
       const n = Math.sqrt(m.hx * m.hx + m.hy * m.hy);
       m.modeC = SLIDE;
       m.qsC = true;
+      m.frozenC = false;
       m.offCx = y[0]! - y[3]!;
       m.offCy = y[1]! + y[2]!;
       if (n > 0) {

@@ -192,6 +192,30 @@ describe('an impact whose restitution can never reach its target', () => {
     }
   });
 
+  it('friction at the both-rolling threshold: a slip whose rates vanish is held, and the long creep ends', () => {
+    // μ = cos θ / (1 + sin θ) = 0.5 at h = 1.6 R: one direction of the cushion slip has rate zero
+    // whatever its size, so the slip stays put while vy stays small and the work falls slowly.
+    // Integrated as it is, the stiff slip took steps of a fraction of itself until the step cap
+    // threw (164 impacts of a 21,000-impact high-friction grid); held, it ends in < 100 steps.
+    const knife = { ...PAPER, muW: 0.5, muS: 1, ee: 0.5, h: 1.6 * R };
+    const s = paperState(1, 60, 0, 2, R);
+    const k = cushionImpact(s, knife);
+    const r = referenceRebound(s, knife);
+    expect(k.outcome).toBe(r.outcome);
+    expect(relError(k.state, r.state, R, 1)).toBeLessThan(1e-5);
+    for (const muS of [0.5, 0.8, 2]) {
+      for (const [alpha, kT, kS] of [[60, 1, 0], [85, 0, 0], [89.5, -1, 0], [60, 0, 2]] as const) {
+        for (const ee of [0.5, 0.98]) {
+          const st = paperState(1, alpha, kT, kS, R);
+          const out = cushionImpact(st, { ...knife, muS, ee });
+          expect(finite(out.state)).toBe(true);
+          expect(out.steps).toBeLessThan(MAX_STEPS / 20);
+          expect(energy(out.state, M, R)).toBeLessThanOrEqual(energy(st, M, R) * (1 + 1e-12));
+        }
+      }
+    }
+  });
+
   it('a contact decided rolling is never aimed at zero again (regression: a loop of steps too small to move)', () => {
     // μw 0.5 at the paper's height: both slips reach zero together, the table contact rolls and
     // the cushion contact slips on; a stale slaving flag on the rolling contact made every step
