@@ -547,7 +547,7 @@ export class CushionModel {
    * u = a / |a| and λ = |a| - 7/2 μs N. NaN when I rolls (then C's rates are not of this form).
    */
   slavedC(y: Float64Array): number {
-    if (this.modeI === STICK) return NaN;
+    if (this.modeI === STICK) return this.slavedCRolling(y);
     const s = this.s;
     const c = this.c;
     let gx: number;
@@ -578,6 +578,34 @@ export class CushionModel {
     this.ux = ax / an;
     this.uy = ay / an;
     return an - 3.5 * this.muS * n;
+  }
+
+  /**
+   * slavedC while I rolls (eq. 15a). C's rates are then not isotropic in its friction, but a
+   * slip along ±y stays along ±y: with u = (0, ±1), h_x = 0, so g_x = -q1 h_x = 0 and both x
+   * rates vanish. So when C's slip lies along y (within 1e-3 rad) that is its slaved direction,
+   * with rate λ = ±(-cosθ + (5/2 - sinθ) g_y + 7/2 h_y) from the rolling conditions (the same
+   * formulas as friction()'s branch); NaN otherwise (no closed form: C follows its own
+   * direction). Found on a creep with μw 1.3: C's slip shrank along -y at a rate proportional
+   * to itself, and the relaxation limit allowed steps of a fraction of it, without end.
+   */
+  private slavedCRolling(y: Float64Array): number {
+    const ex = y[0]! - y[3]! - this.offCx;
+    const ey = y[1]! + y[2]! - this.offCy;
+    if (!(Math.abs(ex) <= 1e-3 * Math.abs(ey))) return NaN;
+    const s = this.s;
+    const c = this.c;
+    const fy = ey > 0 ? 1 : -1;
+    const k = (2.5 - s) * this.muS * fy;
+    const den = s * s + 2.5 + k * c;
+    if (!(den > 0)) return NaN;
+    const gy = (k * s - s * c) / den;
+    const n = s - c * gy;
+    if (!(n > 0)) return NaN;
+    const hy = -this.muS * n * fy;
+    this.ux = 0;
+    this.uy = fy;
+    return fy * (-c + (2.5 - s) * gy + 3.5 * hy);
   }
 
   /**

@@ -216,6 +216,20 @@ describe('an impact whose restitution can never reach its target', () => {
     }
   });
 
+  it('a table slip creeping to zero along y with the cushion contact rolling is slaved, and the impact stalls as the reference does', () => {
+    // μw 1.27, μs 0.71: the cushion contact rolls, the table slip shrinks along -y at a rate
+    // proportional to itself, and vy with it; followed in its own direction the stiff slip took
+    // steps of a fraction of itself until the step cap threw. Slaved along y it reaches zero.
+    const params = { M, R, h: 1.3341578364372255 * R, ee: 0.8355621099472046, muS: 0.7066681981086731, muW: 1.26960951089859 };
+    const V0 = 0.011325368881225586;
+    const s = paperState(V0, 71.5063042064663, 0.5401804447174072, 1.7965729236602783, R);
+    const k = cushionImpact(s, params);
+    const r = referenceRebound(s, params);
+    expect(k.outcome).toBe(r.outcome);
+    expect(k.steps).toBeLessThan(MAX_STEPS / 2);
+    expect(relError(k.state, r.state, R, V0)).toBeLessThan(1e-5);
+  });
+
   it('a contact decided rolling is never aimed at zero again (regression: a loop of steps too small to move)', () => {
     // μw 0.5 at the paper's height: both slips reach zero together, the table contact rolls and
     // the cushion contact slips on; a stale slaving flag on the rolling contact made every step
