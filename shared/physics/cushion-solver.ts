@@ -76,6 +76,8 @@ export class CushionSolver implements FastHost {
   /** How fast a sliding slip's direction relaxes, times its speed (see RELAX_MAX): I, C. */
   relaxI = -0;
   relaxC = -0;
+  /** Steps in a row rejected by the slaving bound (see solve). */
+  private slavingRejects = 0;
   /** Whether the inner loop for two slipping contacts is used (off only to test it). */
   fastLoop = true;
   innerSteps = 0;
@@ -133,6 +135,7 @@ export class CushionSolver implements FastHost {
     this.restitution = false;
     this.wEnd = 0;
     this.steps = 0;
+    this.slavingRejects = 0;
     this.innerSteps = 0;
     this.rejected = 0;
     this.outcome = 'restitution';
@@ -256,9 +259,19 @@ export class CushionSolver implements FastHost {
         const qe = this.slavingError(slavedI, slavedC, uIx, uIy, uCx, uCy);
         if (qe > tolV) {
           this.rejected++;
+          if (++this.slavingRejects >= 3) {
+            // The slaved direction jumps however short the step (two roots of its equation
+            // trade places): slaving does not describe this slip; it follows its own direction.
+            this.slavingRejects = 0;
+            if (slavedI) this.release(0, model.slipIx(y), model.slipIy(y), this.slipNorm(0));
+            if (slavedC) this.release(1, model.slipCx(y), model.slipCy(y), this.slipNorm(1));
+            model.derivative(y, rk.k1);
+            continue;
+          }
           step *= Math.max(0.2, 0.9 * Math.sqrt(tolV / qe));
           continue;
         }
+        this.slavingRejects = 0;
       }
 
       // Accepted. Events located on the continuous extension, in order.

@@ -230,6 +230,20 @@ describe('an impact whose restitution can never reach its target', () => {
     expect(relError(k.state, r.state, R, V0)).toBeLessThan(1e-5);
   });
 
+  it('a slaved slip whose slaved direction jumps however short the step is released, not retried without end', () => {
+    // μw 1.49, μs 1.21, h 1.7 R: two roots of the slaved direction's equation trade places, so
+    // the slaving bound's turn stayed 0.07 rad at steps of 1e-18 and every step was rejected
+    // until the step cap threw.
+    const params = { M, R, h: 1.7022169598937036 * R, ee: 0.19457193976268172, muS: 1.2128499154932797, muW: 1.486025221645832 };
+    const V0 = 0.4092257998324931;
+    const s = paperState(V0, 79.18773647546769, 1.2336058742366731, 1.4062920520082116, R);
+    const k = cushionImpact(s, params);
+    const r = referenceRebound(s, params);
+    expect(k.outcome).toBe(r.outcome);
+    expect(k.steps).toBeLessThan(MAX_STEPS / 20);
+    expect(relError(k.state, r.state, R, V0)).toBeLessThan(1e-5);
+  });
+
   it('a contact decided rolling is never aimed at zero again (regression: a loop of steps too small to move)', () => {
     // μw 0.5 at the paper's height: both slips reach zero together, the table contact rolls and
     // the cushion contact slips on; a stale slaving flag on the rolling contact made every step
