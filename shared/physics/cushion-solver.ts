@@ -176,6 +176,14 @@ export class CushionSolver implements FastHost {
           continue;
         }
       }
+      if (this.restitution && y[1]! >= -this.epsEv && !(rk.k1[1]! < 0)) {
+        // vy is back at zero (within the event tolerance) and the impulse no longer pushes the
+        // ball out: the work has reached its maximum (outcome 'stalled', as when vy crosses 0
+        // inside a step). Checked at a step's start too: with friction near 1 the contacts can
+        // trade sticking there in steps too short to move.
+        this.finishStalled();
+        return;
+      }
       if (++this.steps > MAX_STEPS) {
         throw new Error(
           `cushionRebound: no end after ${MAX_STEPS} steps (P = ${this.p * M} N s, state ${Array.from(y).join(', ')})`,

@@ -244,6 +244,20 @@ describe('an impact whose restitution can never reach its target', () => {
     expect(relError(k.state, r.state, R, V0)).toBeLessThan(1e-5);
   });
 
+  it('contacts trading sticking at vy = 0 in restitution end stalled, as the reference does', () => {
+    // μw 1.74, μs 0.91, h 1.06 R: with vy within 2e-8 m/s of zero the contacts took turns to
+    // stick, each turn a step too short to move p, until the step cap threw.
+    const params = { M, R, h: 1.0632734904438257 * R, ee: 0.32232774212025106, muS: 0.9093467891216278, muW: 1.7445664103142917 };
+    const V0 = 0.22942520793527366;
+    const s = paperState(V0, 83.03270887886174, -2.9974050200544298, -2.9147382848896086, R);
+    const k = cushionImpact(s, params);
+    const r = referenceRebound(s, params);
+    expect(k.outcome).toBe('stalled');
+    expect(r.outcome).toBe('stalled');
+    expect(k.state.vy).toBe(0);
+    expect(relError(k.state, r.state, R, V0)).toBeLessThan(1e-5);
+  });
+
   it('a contact decided rolling is never aimed at zero again (regression: a loop of steps too small to move)', () => {
     // μw 0.5 at the paper's height: both slips reach zero together, the table contact rolls and
     // the cushion contact slips on; a stale slaving flag on the rolling contact made every step
