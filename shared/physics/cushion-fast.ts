@@ -54,6 +54,8 @@ export interface FastHost {
   lastErr: number;
   rI0: number;
   rC0: number;
+  /** After FAST_SETTLE: vy at the accepted step's start. */
+  vy0: number;
   /** Steps taken by this inner loop during the impact (a diagnostic for the tests). */
   innerSteps: number;
 }
@@ -565,6 +567,7 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
     }
     const rI0 = r;
     const rC0 = rc;
+    const vyStart = y1;
     y0 = x0;
     y1 = x1;
     y2 = x2;
@@ -595,6 +598,7 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
       host.lastErr = err;
       host.rI0 = rI0;
       host.rC0 = rC0;
+      host.vy0 = vyStart;
       step = h;
       code = FAST_SETTLE;
       break;

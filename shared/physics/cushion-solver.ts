@@ -73,6 +73,7 @@ export class CushionSolver implements FastHost {
   lastErr = -0;
   rI0 = -0;
   rC0 = -0;
+  vy0 = -0;
   /** How fast a sliding slip's direction relaxes, times its speed (see RELAX_MAX): I, C. */
   relaxI = -0;
   relaxC = -0;
@@ -170,6 +171,7 @@ export class CushionSolver implements FastHost {
         errPrev = this.errPrev;
         if (code === FAST_END) return;
         if (code === FAST_SETTLE) {
+          if (this.backAtZero(this.vy0)) return;
           if (this.settleSlips(this.rI0, this.rC0, tolV)) return;
           step = nextStep(step, this.lastErr, errPrev);
           errPrev = errorMemory(this.lastErr);
@@ -210,7 +212,12 @@ export class CushionSolver implements FastHost {
         if (r > model.epsSlip) {
           model.refIx = ex / r;
           model.refIy = ey / r;
-          step = this.limitBySlip(ex, ey, r, model.rateIx(rk.k1), model.rateIy(rk.k1), step, this.relaxI);
+          const rx = model.rateIx(rk.k1);
+          // A cushion slip exactly along ±y while the table contact rolls stays so (its x rate is
+          // exactly zero: no friction acts along x at either contact): its direction cannot
+          // wobble, so its relaxation does not bound the step (RELAX_MAX).
+          const pinned = ex === 0 && rx === 0 && model.modeC === STICK;
+          step = this.limitBySlip(ex, ey, r, rx, model.rateIy(rk.k1), step, pinned ? 0 : this.relaxI);
         } else {
           model.refIx = model.hintIx;
           model.refIy = model.hintIy;
@@ -368,8 +375,10 @@ export class CushionSolver implements FastHost {
       }
       if (leave) {
         this.recordTrace(step, stop);
+        const vyStart = y[1]!;
         rk.denseAll(stop, y);
         this.p += stop * step;
+        if (this.backAtZero(vyStart)) return;
         this.leaveStick();
         model.derivative(y, rk.k1);
         continue;
@@ -379,14 +388,31 @@ export class CushionSolver implements FastHost {
         this.recordTrace(step, 1);
       }
       const rI0 = model.modeI === SLIDE ? this.slipNorm(0) : 0;
+      const vyStart = y[1]!;
       const rC0 = model.modeC === SLIDE ? this.slipNorm(1) : 0;
       copy6(rk.y1, y);
       rk.swap();
       this.p += step;
+      if (this.backAtZero(vyStart)) return;
       if (this.settleSlips(rI0, rC0, tolV)) return;
       step = nextStep(step, err, errPrev);
       errPrev = errorMemory(err);
     }
+  }
+
+  /**
+   * After an accepted step from vy = vyStart, before the slips are settled: in restitution, vy
+   * that rose back to zero (within the event tolerance) ends the impact stalled, as when vy
+   * crosses 0 inside a step. Checked before the rolling conditions decide at a slip zero met at
+   * the same instant (with the table contact rolling, the cushion slip along y is
+   * -(1 + sinθ) vy, so it reaches zero exactly with vy): the branch they choose may push the
+   * ball out again, but vy has come back to zero first. True when the impact ended.
+   */
+  private backAtZero(vyStart: number): boolean {
+    const vy = this.y[1]!;
+    if (!(this.restitution && vy >= -this.epsEv && vy > vyStart)) return false;
+    this.finishStalled();
+    return true;
   }
 
   /**

@@ -242,6 +242,18 @@ describe('an impact whose restitution can never reach its target', () => {
     expect(k.state.vy).toBe(0);
   });
 
+  it('a cushion slip pinned along y while the table contact rolls is not held to its relaxation steps', () => {
+    // Cushion friction just below the both-rolling threshold cos θ / (1 + sin θ): the cushion
+    // slip leaves a zero along +y with the table contact rolling, and stays exactly along y.
+    // Bounded by its relaxation limit, the first crept 700 m/s of impulse in steps of 0.011, the
+    // second grew from 4e-9 m/s by 0.03% a step: both threw at the step cap (20000).
+    const creep = { M, R, h: 1.6650346096605062 * R, ee: 0.8014948160853237, muS: 1.2499928763136268, muW: 0.44839130714535713 };
+    const k = matchesReference(paperState(3.9794944187067447, 64.91499972613528, 0.8641871865838766, 0.6115618469193578, R), creep, 200);
+    expect(k.outcome).toBe('restitution');
+    const onset = { M, R, h: 1.4682583466917276 * R, ee: 0.02180321072228253, muS: 1.5290587563067675, muW: 0.6015911819413304 };
+    matchesReference(paperState(0.1757225973904133, 72.11855995615478, -0.6047184211201966, 1.7527369279414415, R), onset, 200);
+  });
+
   it('a contact decided rolling is never aimed at zero again (regression: a loop of steps too small to move)', () => {
     // μw 0.5 at the paper's height: both slips reach zero together, the table contact rolls and
     // the cushion contact slips on; a stale slaving flag on the rolling contact made every step
