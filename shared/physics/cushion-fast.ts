@@ -11,7 +11,9 @@
 // slaved slip or a stalled ending is handed back to the general loop at the start of the
 // iteration that needs it, or right after a step when a slip has become small. Equations: cushion-model.ts (Mathavan et al. 2010,
 // eq. 14 with both contacts slipping).
-import { errorMemory, invRoot, MAX_STEPS, nextStep, QS_RHO, RELAX_MAX, TURN_MAX } from './cushion-control.ts';
+import {
+  errorMemory, invRoot, MAX_STEPS, nextStep, QS_EXIT, QS_GROW, QS_RHO, RELAX_MAX, TURN_MAX,
+} from './cushion-control.ts';
 import type { CushionModel } from './cushion-model.ts';
 import {
   A21, A31, A32, A41, A42, A43, A51, A52, A53, A54, A61, A62, A63, A64, A65, B1, B3, B4, B5, B6,
@@ -96,7 +98,12 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
   const relaxC = host.relaxC;
   const tol0 = -epsEv;
   const small = QS_RHO * host.V;
-  const iat = 1 / host.atolV;
+  const atolV = host.atolV;
+  const iat = 1 / atolV;
+  const qsExit = QS_EXIT * host.V;
+  const qsGrow = QS_GROW * host.V;
+  // C slaved while growing from zero (see the step start).
+  let slavC = m.qsC;
   const iat5 = 1 / host.atolW;
   const ee2 = host.ee2;
   let step = host.step;
@@ -132,7 +139,7 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
   let code = FAST_GENERAL;
   for (;;) {
     if (steps >= MAX_STEPS) break; // the general loop throws
-    if (!(r > epsSlip) || !(rc > epsSlip)) break; // onset directions: the general loop
+    if (!(r > epsSlip) || !(slavC || rc > epsSlip)) break; // onset directions: the general loop
     steps++;
     // Slip directions at the step's start and the step limits (CushionSolver.limitBySlip).
     const rIx = eIx / r;
@@ -143,13 +150,50 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
     let turn = Math.abs(aIx * eIy - aIy * eIx) / r;
     if (turn * h > TURN_MAX * r) h = TURN_MAX * r / turn;
     if (relaxI * h > RELAX_MAX * r) h = RELAX_MAX * r / relaxI;
-    const rCx = eCx / rc;
-    const rCy = eCy / rc;
-    rate = (eCx * aCx + eCy * aCy) / rc;
-    if (rate < 0 && rc <= -rate * h) h = -rc / rate;
-    turn = Math.abs(aCx * eCy - aCy * eCx) / rc;
-    if (turn * h > TURN_MAX * rc) h = TURN_MAX * rc / turn;
-    if (relaxC * h > RELAX_MAX * rc) h = RELAX_MAX * rc / relaxC;
+    let rCx = 0;
+    let rCy = 0;
+    if (slavC) {
+      // C slaved, growing from zero (a ball rolling on the cloth; CushionSolver.slavedStart and
+      // releaseGrown): the direction its rates enforce, here along C's rates without its own
+      // friction, a + 3.5 (-μs n) u with |a| > 3.5 μs n.
+      const ax = wCx * rIx;
+      const ay = wCy * rIy - c;
+      const an = Math.sqrt(ax * ax + ay * ay);
+      let nmu = kMu * rIy - muSs;
+      if (nmu > 0) nmu = 0;
+      const lam = an + 3.5 * nmu;
+      if (!(an > 0)) {
+        steps--;
+        break;
+      }
+      if (rc > qsExit && lam > 0) {
+        // Grown: it follows its own direction again (CushionSolver.release).
+        slavC = false;
+        m.qsC = false;
+        m.frozenC = false;
+        m.refCx = eCx / rc;
+        m.refCy = eCy / rc;
+      } else if (!(lam > 0) || rc > epsSlip) {
+        steps--; // shrinking or partly grown: the general loop
+        break;
+      } else {
+        rCx = ax / an;
+        rCy = ay / an;
+        // One step carries it at most to QS_GROW × V: the error estimate does not see what
+        // slaving neglects.
+        const t = (qsGrow - rc) / lam;
+        if (t > 0 && t < h) h = t;
+      }
+    }
+    if (!slavC) {
+      rCx = eCx / rc;
+      rCy = eCy / rc;
+      rate = (eCx * aCx + eCy * aCy) / rc;
+      if (rate < 0 && rc <= -rate * h) h = -rc / rate;
+      turn = Math.abs(aCx * eCy - aCy * eCx) / rc;
+      if (turn * h > TURN_MAX * rc) h = TURN_MAX * rc / turn;
+      if (relaxC * h > RELAX_MAX * rc) h = RELAX_MAX * rc / relaxC;
+    }
 
     // One Dormand-Prince step. The tableau is scaled by the step, so that a stage's newest
     // term costs one product and one sum on the way to the next stage; the slips are stepped
@@ -193,21 +237,32 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
     {
       const d = bsIx * rIx + bsIy * rIy;
       if (d < mdI) mdI = d;
-      const sr = Math.sqrt(bsIx * bsIx + bsIy * bsIy);
+      const ssI = bsIx * bsIx + bsIy * bsIy;
+      const sr = Math.sqrt(ssI);
+      const iI = sr * (1 / ssI);
       let uIx = rIx;
       let uIy = rIy;
       if (!(d <= 0 || sr <= epsSlip)) {
-        uIx = bsIx / sr;
-        uIy = bsIy / sr;
+        uIx = bsIx * iI;
+        uIy = bsIy * iI;
       }
       const dc = bsCx * rCx + bsCy * rCy;
       if (dc < mdC) mdC = dc;
-      const tr = Math.sqrt(bsCx * bsCx + bsCy * bsCy);
+      const ssC = bsCx * bsCx + bsCy * bsCy;
+      const tr = Math.sqrt(ssC);
+      const iC = tr * (1 / ssC);
       let uCx = rCx;
       let uCy = rCy;
-      if (!(dc <= 0 || tr <= epsSlip)) {
-        uCx = bsCx / tr;
-        uCy = bsCy / tr;
+      if (slavC) {
+        // Slaved (growing from zero): along C's rates without its own friction.
+        const ax = wCx * uIx;
+        const ay = wCy * uIy - c;
+        const an = Math.sqrt(ax * ax + ay * ay);
+        uCx = ax / an;
+        uCy = ay / an;
+      } else if (!(dc <= 0 || tr <= epsSlip)) {
+        uCx = bsCx * iC;
+        uCy = bsCy * iC;
       }
       let nmu = kMu * uIy - muSs;
       if (nmu > 0) nmu = 0;
@@ -237,21 +292,32 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
     {
       const d = csIx * rIx + csIy * rIy;
       if (d < mdI) mdI = d;
-      const sr = Math.sqrt(csIx * csIx + csIy * csIy);
+      const ssI = csIx * csIx + csIy * csIy;
+      const sr = Math.sqrt(ssI);
+      const iI = sr * (1 / ssI);
       let uIx = rIx;
       let uIy = rIy;
       if (!(d <= 0 || sr <= epsSlip)) {
-        uIx = csIx / sr;
-        uIy = csIy / sr;
+        uIx = csIx * iI;
+        uIy = csIy * iI;
       }
       const dc = csCx * rCx + csCy * rCy;
       if (dc < mdC) mdC = dc;
-      const tr = Math.sqrt(csCx * csCx + csCy * csCy);
+      const ssC = csCx * csCx + csCy * csCy;
+      const tr = Math.sqrt(ssC);
+      const iC = tr * (1 / ssC);
       let uCx = rCx;
       let uCy = rCy;
-      if (!(dc <= 0 || tr <= epsSlip)) {
-        uCx = csCx / tr;
-        uCy = csCy / tr;
+      if (slavC) {
+        // Slaved (growing from zero): along C's rates without its own friction.
+        const ax = wCx * uIx;
+        const ay = wCy * uIy - c;
+        const an = Math.sqrt(ax * ax + ay * ay);
+        uCx = ax / an;
+        uCy = ay / an;
+      } else if (!(dc <= 0 || tr <= epsSlip)) {
+        uCx = csCx * iC;
+        uCy = csCy * iC;
       }
       let nmu = kMu * uIy - muSs;
       if (nmu > 0) nmu = 0;
@@ -281,21 +347,32 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
     {
       const d = dsIx * rIx + dsIy * rIy;
       if (d < mdI) mdI = d;
-      const sr = Math.sqrt(dsIx * dsIx + dsIy * dsIy);
+      const ssI = dsIx * dsIx + dsIy * dsIy;
+      const sr = Math.sqrt(ssI);
+      const iI = sr * (1 / ssI);
       let uIx = rIx;
       let uIy = rIy;
       if (!(d <= 0 || sr <= epsSlip)) {
-        uIx = dsIx / sr;
-        uIy = dsIy / sr;
+        uIx = dsIx * iI;
+        uIy = dsIy * iI;
       }
       const dc = dsCx * rCx + dsCy * rCy;
       if (dc < mdC) mdC = dc;
-      const tr = Math.sqrt(dsCx * dsCx + dsCy * dsCy);
+      const ssC = dsCx * dsCx + dsCy * dsCy;
+      const tr = Math.sqrt(ssC);
+      const iC = tr * (1 / ssC);
       let uCx = rCx;
       let uCy = rCy;
-      if (!(dc <= 0 || tr <= epsSlip)) {
-        uCx = dsCx / tr;
-        uCy = dsCy / tr;
+      if (slavC) {
+        // Slaved (growing from zero): along C's rates without its own friction.
+        const ax = wCx * uIx;
+        const ay = wCy * uIy - c;
+        const an = Math.sqrt(ax * ax + ay * ay);
+        uCx = ax / an;
+        uCy = ay / an;
+      } else if (!(dc <= 0 || tr <= epsSlip)) {
+        uCx = dsCx * iC;
+        uCy = dsCy * iC;
       }
       let nmu = kMu * uIy - muSs;
       if (nmu > 0) nmu = 0;
@@ -325,21 +402,32 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
     {
       const d = esIx * rIx + esIy * rIy;
       if (d < mdI) mdI = d;
-      const sr = Math.sqrt(esIx * esIx + esIy * esIy);
+      const ssI = esIx * esIx + esIy * esIy;
+      const sr = Math.sqrt(ssI);
+      const iI = sr * (1 / ssI);
       let uIx = rIx;
       let uIy = rIy;
       if (!(d <= 0 || sr <= epsSlip)) {
-        uIx = esIx / sr;
-        uIy = esIy / sr;
+        uIx = esIx * iI;
+        uIy = esIy * iI;
       }
       const dc = esCx * rCx + esCy * rCy;
       if (dc < mdC) mdC = dc;
-      const tr = Math.sqrt(esCx * esCx + esCy * esCy);
+      const ssC = esCx * esCx + esCy * esCy;
+      const tr = Math.sqrt(ssC);
+      const iC = tr * (1 / ssC);
       let uCx = rCx;
       let uCy = rCy;
-      if (!(dc <= 0 || tr <= epsSlip)) {
-        uCx = esCx / tr;
-        uCy = esCy / tr;
+      if (slavC) {
+        // Slaved (growing from zero): along C's rates without its own friction.
+        const ax = wCx * uIx;
+        const ay = wCy * uIy - c;
+        const an = Math.sqrt(ax * ax + ay * ay);
+        uCx = ax / an;
+        uCy = ay / an;
+      } else if (!(dc <= 0 || tr <= epsSlip)) {
+        uCx = esCx * iC;
+        uCy = esCy * iC;
       }
       let nmu = kMu * uIy - muSs;
       if (nmu > 0) nmu = 0;
@@ -369,21 +457,32 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
     {
       const d = fsIx * rIx + fsIy * rIy;
       if (d < mdI) mdI = d;
-      const sr = Math.sqrt(fsIx * fsIx + fsIy * fsIy);
+      const ssI = fsIx * fsIx + fsIy * fsIy;
+      const sr = Math.sqrt(ssI);
+      const iI = sr * (1 / ssI);
       let uIx = rIx;
       let uIy = rIy;
       if (!(d <= 0 || sr <= epsSlip)) {
-        uIx = fsIx / sr;
-        uIy = fsIy / sr;
+        uIx = fsIx * iI;
+        uIy = fsIy * iI;
       }
       const dc = fsCx * rCx + fsCy * rCy;
       if (dc < mdC) mdC = dc;
-      const tr = Math.sqrt(fsCx * fsCx + fsCy * fsCy);
+      const ssC = fsCx * fsCx + fsCy * fsCy;
+      const tr = Math.sqrt(ssC);
+      const iC = tr * (1 / ssC);
       let uCx = rCx;
       let uCy = rCy;
-      if (!(dc <= 0 || tr <= epsSlip)) {
-        uCx = fsCx / tr;
-        uCy = fsCy / tr;
+      if (slavC) {
+        // Slaved (growing from zero): along C's rates without its own friction.
+        const ax = wCx * uIx;
+        const ay = wCy * uIy - c;
+        const an = Math.sqrt(ax * ax + ay * ay);
+        uCx = ax / an;
+        uCy = ay / an;
+      } else if (!(dc <= 0 || tr <= epsSlip)) {
+        uCx = fsCx * iC;
+        uCy = fsCy * iC;
       }
       let nmu = kMu * uIy - muSs;
       if (nmu > 0) nmu = 0;
@@ -414,27 +513,40 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
     const x5 = y5 + hB1 * a5 + hB3 * c5 + hB4 * d5 + hB5 * e5 + hB6 * f5;
     let rN = r;
     let rcN = rc;
+    let uCxEnd = 0;
+    let uCyEnd = 0;
     // dy/dp and the slip rates at stage g.
     let g0: number, g1: number, g2: number, g3: number, g4: number, g5: number;
     let gIx: number, gIy: number, gCx: number, gCy: number;
     {
       const d = xIx * rIx + xIy * rIy;
       if (d < mdI) mdI = d;
-      const sr = Math.sqrt(xIx * xIx + xIy * xIy);
+      const ssI = xIx * xIx + xIy * xIy;
+      const sr = Math.sqrt(ssI);
+      const iI = sr * (1 / ssI);
       let uIx = rIx;
       let uIy = rIy;
       if (!(d <= 0 || sr <= epsSlip)) {
-        uIx = xIx / sr;
-        uIy = xIy / sr;
+        uIx = xIx * iI;
+        uIy = xIy * iI;
       }
       const dc = xCx * rCx + xCy * rCy;
       if (dc < mdC) mdC = dc;
-      const tr = Math.sqrt(xCx * xCx + xCy * xCy);
+      const ssC = xCx * xCx + xCy * xCy;
+      const tr = Math.sqrt(ssC);
+      const iC = tr * (1 / ssC);
       let uCx = rCx;
       let uCy = rCy;
-      if (!(dc <= 0 || tr <= epsSlip)) {
-        uCx = xCx / tr;
-        uCy = xCy / tr;
+      if (slavC) {
+        // Slaved (growing from zero): along C's rates without its own friction.
+        const ax = wCx * uIx;
+        const ay = wCy * uIy - c;
+        const an = Math.sqrt(ax * ax + ay * ay);
+        uCx = ax / an;
+        uCy = ay / an;
+      } else if (!(dc <= 0 || tr <= epsSlip)) {
+        uCx = xCx * iC;
+        uCy = xCy * iC;
       }
       let nmu = kMu * uIy - muSs;
       if (nmu > 0) nmu = 0;
@@ -454,6 +566,8 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
       gCy = wCy * uIy - c + nmu * (3.5 * uCy);
       rN = sr;
       rcN = tr;
+      uCxEnd = uCx;
+      uCyEnd = uCy;
     }
 
     if (mdI < tol0 || mdC < tol0) {
@@ -484,6 +598,19 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
       step = h * Math.max(0.2, 0.9 * invRoot(err));
       continue;
     }
+    if (slavC) {
+      // What slaving neglects, which the error estimate cannot see (CushionSolver.slavingError):
+      // about |slip| × the slaved direction's turn / 2.5. A step that exceeds the tolerance is
+      // retried shorter by the general loop.
+      const dx = uCxEnd - rCx;
+      const dy = uCyEnd - rCy;
+      const qe = Math.sqrt((xCx * xCx + xCy * xCy) * (dx * dx + dy * dy)) / 2.5;
+      if (qe > atolV) {
+        rejected++;
+        step = h * Math.max(0.2, 0.9 * Math.sqrt(atolV / qe));
+        break;
+      }
+    }
 
     // Accepted: end of compression and the work target on the continuous extension.
     let endAt = -1;
@@ -493,6 +620,10 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
       // The continuous extension of this step (Dopri5.prepareDense) of vy and the work.
       denseVariable(Q, 5, h, y1, x1, a1, c1, d1, e1, f1, g1);
       denseVariable(Q, 25, h, y5, x5, a5, c5, d5, e5, f5, g5);
+    }
+    if (compressionEnds && slavC) {
+      steps--; // with a slaved slip the general loop decides (CushionSolver.slipAtZero)
+      break;
     }
     if (compressionEnds) {
       from = denseRoot(Q, 1, 0, 0, 1);
@@ -564,6 +695,10 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
       p += endAt * h;
       code = FAST_END;
       break;
+    }
+    if (slavC) {
+      m.hintCx = uCxEnd;
+      m.hintCy = uCyEnd;
     }
     const rI0 = r;
     const rC0 = rc;

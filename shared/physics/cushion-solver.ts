@@ -162,8 +162,9 @@ export class CushionSolver implements FastHost {
         this.releaseGrown();
       }
       if (this.fastLoop && this.trace === null && model.modeI === SLIDE && model.modeC === SLIDE &&
-        !model.qsI && !model.qsC) {
-        // Both contacts slip: the inner loop takes these steps faster (cushion-fast.ts).
+        !model.qsI && !model.frozenC && (!model.qsC || this.slipNorm(1) <= model.epsSlip)) {
+        // Both contacts slip (the table contact perhaps slaved, growing from zero): the inner
+        // loop takes these steps faster (cushion-fast.ts).
         this.step = step;
         this.errPrev = errPrev;
         const code = fastSteps(this, y, rk.k1);
