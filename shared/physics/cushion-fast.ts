@@ -104,6 +104,7 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
   const qsGrow = QS_GROW * host.V;
   // C slaved while growing from zero (see the step start).
   let slavC = m.qsC;
+  let slavRejects = 0;
   const iat5 = 1 / host.atolW;
   const ee2 = host.ee2;
   let step = host.step;
@@ -601,15 +602,17 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
     if (slavC) {
       // What slaving neglects, which the error estimate cannot see (CushionSolver.slavingError):
       // about |slip| × the slaved direction's turn / 2.5. A step that exceeds the tolerance is
-      // retried shorter by the general loop.
+      // retried shorter; at the third in a row the general loop decides (it releases the slip).
       const dx = uCxEnd - rCx;
       const dy = uCyEnd - rCy;
       const qe = Math.sqrt((xCx * xCx + xCy * xCy) * (dx * dx + dy * dy)) / 2.5;
       if (qe > atolV) {
         rejected++;
         step = h * Math.max(0.2, 0.9 * Math.sqrt(atolV / qe));
-        break;
+        if (++slavRejects >= 3) break;
+        continue;
       }
+      slavRejects = 0;
     }
 
     // Accepted: end of compression and the work target on the continuous extension.
