@@ -1,5 +1,5 @@
 // The cushion solver's inner loop for its most common stretch: both contacts slipping, neither
-// slaved (see cushion-solver.ts). It takes the steps CushionSolver's general loop would take
+// slaved, or the table contact slaved while it grows from zero (see cushion-solver.ts). It takes the steps CushionSolver's general loop would take
 // (the same Dormand-Prince steps, step limits, rejections, event location and step control) on
 // local numbers, with the arithmetic arranged for a short chain from one stage to the next: the
 // four slips are stepped as variables of their own with their rates (so a stage's slip is one
@@ -9,8 +9,9 @@
 // decision, to within the tolerance (tests/unit/cushion-fast.test.ts). About twice as fast per
 // step as the general loop (docs/cushion.md). Whatever needs the rolling conditions, a
 // slaved slip or a stalled ending is handed back to the general loop at the start of the
-// iteration that needs it, or right after a step when a slip has become small. Equations: cushion-model.ts (Mathavan et al. 2010,
-// eq. 14 with both contacts slipping).
+// iteration that needs it, or right after a step when a slip has become small. One step (taken
+// or rejected) a call of fastSteps, its state carried in K and S (see runFast for why).
+// Equations: cushion-model.ts (Mathavan et al. 2010, eq. 14 with both contacts slipping).
 import {
   errorMemory, invRoot, MAX_STEPS, nextStep, QS_EXIT, QS_GROW, QS_RHO, RELAX_MAX, TURN_MAX,
 } from './cushion-control.ts';
@@ -30,6 +31,8 @@ export const FAST_END = 1;
  * slip, a slaved one) and then applies the step control with host.lastErr.
  */
 export const FAST_SETTLE = 2;
+/** A step was taken or rejected: call again. */
+export const FAST_AGAIN = 3;
 
 /** The solver state the inner loop reads and advances (CushionSolver implements it). */
 export interface FastHost {
@@ -64,56 +67,166 @@ export interface FastHost {
 
 // The continuous extension of a step (5 coefficients per variable, cushion-dense.ts).
 const Q = new Float64Array(30);
+// The constants of a run of the inner loop (fastBegin), and what fastSteps carries from one
+// step to the next: the slips and their rates (0-9), the step control and counts (10-14),
+// restitution (15), the work's target (16), C slaved (17) and slaving rejections in a row (18).
+// (Passed to fastSteps as arguments: read from the module's scope, every element's load
+// re-checked the array.)
+const K = new Float64Array(29);
+const S = new Float64Array(19);
 
-/**
- * Runs the general loop's iterations while both contacts slip and no slip is slaved, from the
- * state in y with its derivative in k1 (advanced in place). See FAST_GENERAL, FAST_END and
- * FAST_SETTLE for what it leaves to the caller.
- */
-export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): number {
+/** Fills K and S for a run of fastSteps from the host, the state y and its derivative k1. */
+function fastBegin(host: FastHost, y: Float64Array, k1: Float64Array): void {
   const m = host.model;
   const s = m.s;
   const c = m.c;
-  const nmuW = -m.muW;
+  const muW = m.muW;
   const muS = m.muS;
+  K[0] = s;
+  K[1] = c;
+  K[2] = -muW;
+  K[3] = muS;
   // The table's normal times -μs is kMu uIy - muSs (with g = -μw uI); the slips' rates
   // (cushion-model.ts) are w uI + (-μs n) z uC.
-  const muSs = muS * s;
-  const kMu = -(muS * c * m.muW);
-  const sc = s * c;
-  const pushesOut = s * m.muW + muS * (s + c * m.muW) < c;
-  const wIx = -3.5 * m.muW;
-  const zIx = 1 - 2.5 * s;
-  const wIy = -(s * s + 2.5) * m.muW;
-  const zIy = 2.5 - s;
-  const wCx = -(1 - 2.5 * s) * m.muW;
-  const wCy = -(2.5 - s) * m.muW;
-  const epsSlip = m.epsSlip;
+  K[4] = muS * s;
+  K[5] = -(muS * c * muW);
+  K[6] = s * c;
+  K[7] = s * muW + muS * (s + c * muW) < c ? 1 : 0;
+  K[8] = -3.5 * muW;
+  K[9] = 1 - 2.5 * s;
+  K[10] = -(s * s + 2.5) * muW;
+  K[11] = 2.5 - s;
+  K[12] = -(1 - 2.5 * s) * muW;
+  K[13] = -(2.5 - s) * muW;
+  K[14] = m.epsSlip;
   const oIx = m.offIx;
   const oIy = m.offIy;
   const oCx = m.offCx;
   const oCy = m.offCy;
-  const epsEv = host.epsEv;
-  const relaxI = host.relaxI;
-  const relaxC = host.relaxC;
+  K[15] = oIx;
+  K[16] = oIy;
+  K[17] = oCx;
+  K[18] = oCy;
+  K[19] = host.epsEv;
+  K[20] = host.relaxI;
+  K[21] = host.relaxC;
+  K[22] = QS_RHO * host.V;
+  K[23] = host.atolV;
+  K[24] = 1 / host.atolV;
+  K[25] = QS_EXIT * host.V;
+  K[26] = QS_GROW * host.V;
+  K[27] = 1 / host.atolW;
+  K[28] = host.ee2;
+  const y0 = y[0]!;
+  const y1 = y[1]!;
+  const y2 = y[2]!;
+  const y3 = y[3]!;
+  const y4 = y[4]!;
+  const a0 = k1[0]!;
+  const a1 = k1[1]!;
+  const a3 = k1[3]!;
+  const a2 = k1[2]!;
+  const a4 = k1[4]!;
+  const eIx = y0 + s * y3 - c * y4 - oIx;
+  const eIy = -s * y1 + y2 - oIy;
+  const eCx = y0 - y3 - oCx;
+  const eCy = y1 + y2 - oCy;
+  S[0] = eIx;
+  S[1] = eIy;
+  S[2] = eCx;
+  S[3] = eCy;
+  S[4] = a0 + s * a3 - c * a4;
+  S[5] = -s * a1 + a2;
+  S[6] = a0 - a3;
+  S[7] = a1 + a2;
+  S[8] = Math.sqrt(eIx * eIx + eIy * eIy);
+  S[9] = Math.sqrt(eCx * eCx + eCy * eCy);
+  S[10] = host.step;
+  S[11] = host.errPrev;
+  S[12] = host.steps;
+  S[13] = host.rejected;
+  S[14] = host.p;
+  S[15] = host.restitution ? 1 : 0;
+  S[16] = host.wEnd;
+  S[17] = m.qsC ? 1 : 0;
+  S[18] = 0;
+}
+
+/**
+ * Runs the inner loop (fastSteps) step by step until it hands back: see FAST_GENERAL, FAST_END
+ * and FAST_SETTLE. One step a call keeps fastSteps free of a loop: with the steps looping inside
+ * it, V8 (Node 20) sometimes re-optimized it after its one deoptimization (the first time it
+ * met an operation it had not yet executed) only for entry at the loop (on-stack replacement),
+ * and every call then began in unoptimized code: the whole process ran the kernel four times
+ * slower (1 run in 6 of a benchmark, 3 in 4 of another). This costs about 8% against the loop
+ * when that does not happen (docs/cushion.md).
+ */
+export function runFast(host: FastHost, y: Float64Array, k1: Float64Array): number {
+  fastBegin(host, y, k1);
+  let code = fastSteps(host, y, k1, K, S);
+  while (code === FAST_AGAIN) code = fastSteps(host, y, k1, K, S);
+  const steps = S[12]!;
+  host.innerSteps += steps - host.steps;
+  host.step = S[10]!;
+  host.errPrev = S[11]!;
+  host.steps = steps;
+  host.rejected = S[13]!;
+  host.p = S[14]!;
+  host.restitution = S[15] !== 0;
+  host.wEnd = S[16]!;
+  return code;
+}
+
+/**
+ * One iteration of the general loop (a step, taken or rejected) while both contacts slip (the
+ * table contact perhaps slaved from zero), from the state in y with its derivative in k1
+ * (advanced in place), the constants in kc and the carried state in st (K and S). FAST_AGAIN:
+ * call again; see FAST_GENERAL, FAST_END and FAST_SETTLE for what it leaves to the caller.
+ */
+export function fastSteps(
+  host: FastHost, y: Float64Array, k1: Float64Array, kc: Float64Array, st: Float64Array,
+): number {
+  const m = host.model;
+  const s = kc[0]!;
+  const c = kc[1]!;
+  const nmuW = kc[2]!;
+  const muS = kc[3]!;
+  const muSs = kc[4]!;
+  const kMu = kc[5]!;
+  const sc = kc[6]!;
+  const pushesOut = kc[7]! !== 0;
+  const wIx = kc[8]!;
+  const zIx = kc[9]!;
+  const wIy = kc[10]!;
+  const zIy = kc[11]!;
+  const wCx = kc[12]!;
+  const wCy = kc[13]!;
+  const epsSlip = kc[14]!;
+  const oIx = kc[15]!;
+  const oIy = kc[16]!;
+  const oCx = kc[17]!;
+  const oCy = kc[18]!;
+  const epsEv = kc[19]!;
+  const relaxI = kc[20]!;
+  const relaxC = kc[21]!;
   const tol0 = -epsEv;
-  const small = QS_RHO * host.V;
-  const atolV = host.atolV;
-  const iat = 1 / atolV;
-  const qsExit = QS_EXIT * host.V;
-  const qsGrow = QS_GROW * host.V;
+  const small = kc[22]!;
+  const atolV = kc[23]!;
+  const iat = kc[24]!;
+  const qsExit = kc[25]!;
+  const qsGrow = kc[26]!;
+  const iat5 = kc[27]!;
+  const ee2 = kc[28]!;
   // C slaved while growing from zero (see the step start).
-  let slavC = m.qsC;
-  let slavRejects = 0;
-  const iat5 = 1 / host.atolW;
-  const ee2 = host.ee2;
-  let step = host.step;
-  let errPrev = host.errPrev;
-  let steps = host.steps;
-  let rejected = host.rejected;
-  let p = host.p;
-  let restitution = host.restitution;
-  let wEnd = host.wEnd;
+  let slavC = st[17] !== 0;
+  let slavRejects = st[18]!;
+  let step = st[10]!;
+  let errPrev = st[11]!;
+  let steps = st[12]!;
+  let rejected = st[13]!;
+  let p = st[14]!;
+  let restitution = st[15] !== 0;
+  let wEnd = st[16]!;
   let y0 = y[0]!;
   let y1 = y[1]!;
   let y2 = y[2]!;
@@ -126,21 +239,21 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
   let a3 = k1[3]!;
   let a4 = k1[4]!;
   let a5 = k1[5]!;
-  // The slips (minus their offsets) and their rates, stepped alongside y.
-  let eIx = y0 + s * y3 - c * y4 - oIx;
-  let eIy = -s * y1 + y2 - oIy;
-  let eCx = y0 - y3 - oCx;
-  let eCy = y1 + y2 - oCy;
-  let aIx = a0 + s * a3 - c * a4;
-  let aIy = -s * a1 + a2;
-  let aCx = a0 - a3;
-  let aCy = a1 + a2;
-  let r = Math.sqrt(eIx * eIx + eIy * eIy);
-  let rc = Math.sqrt(eCx * eCx + eCy * eCy);
+  // The slips (minus their offsets) and their rates, stepped alongside y (fastBegin).
+  let eIx = st[0]!;
+  let eIy = st[1]!;
+  let eCx = st[2]!;
+  let eCy = st[3]!;
+  let aIx = st[4]!;
+  let aIy = st[5]!;
+  let aCx = st[6]!;
+  let aCy = st[7]!;
+  let r = st[8]!;
+  let rc = st[9]!;
   let code = FAST_GENERAL;
-  for (;;) {
-    if (steps >= MAX_STEPS) break; // the general loop throws
-    if (!(r > epsSlip) || !(slavC || rc > epsSlip)) break; // onset directions: the general loop
+  attempt: {
+    if (steps >= MAX_STEPS) break attempt; // the general loop throws
+    if (!(r > epsSlip) || !(slavC || rc > epsSlip)) break attempt; // onset directions: the general loop
     steps++;
     // Slip directions at the step's start and the step limits (CushionSolver.limitBySlip).
     const rIx = eIx / r;
@@ -165,7 +278,7 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
       const lam = an + 3.5 * nmu;
       if (!(an > 0)) {
         steps--;
-        break;
+        break attempt;
       }
       if (rc > qsExit && lam > 0) {
         // Grown: it follows its own direction again (CushionSolver.release).
@@ -176,7 +289,7 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
         m.refCy = eCy / rc;
       } else if (!(lam > 0) || rc > epsSlip) {
         steps--; // shrinking or partly grown: the general loop
-        break;
+        break attempt;
       } else {
         rCx = ax / an;
         rCy = ay / an;
@@ -579,7 +692,8 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
       if (mdI < tol0) t = Math.min(t, crossingFraction(eIx * rIx + eIy * rIy, xIx * rIx + xIy * rIy));
       if (mdC < tol0) t = Math.min(t, crossingFraction(eCx * rCx + eCy * rCy, xCx * rCx + xCy * rCy));
       step = h * t;
-      continue;
+      code = FAST_AGAIN;
+      break attempt;
     }
     let err = 0;
     const q0 = Math.abs(hE1 * a0 + hE3 * c0 + hE4 * d0 + hE5 * e0 + hE6 * f0 + hE7 * g0) * iat;
@@ -597,7 +711,8 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
     if (err > 1) {
       rejected++;
       step = h * Math.max(0.2, 0.9 * invRoot(err));
-      continue;
+      code = FAST_AGAIN;
+      break attempt;
     }
     if (slavC) {
       // What slaving neglects, which the error estimate cannot see (CushionSolver.slavingError):
@@ -609,8 +724,9 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
       if (qe > atolV) {
         rejected++;
         step = h * Math.max(0.2, 0.9 * Math.sqrt(atolV / qe));
-        if (++slavRejects >= 3) break;
-        continue;
+        if (++slavRejects >= 3) break attempt;
+        code = FAST_AGAIN;
+      break attempt;
       }
       slavRejects = 0;
     }
@@ -626,7 +742,7 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
     }
     if (compressionEnds && slavC) {
       steps--; // with a slaved slip the general loop decides (CushionSolver.slipAtZero)
-      break;
+      break attempt;
     }
     if (compressionEnds) {
       from = denseRoot(Q, 1, 0, 0, 1);
@@ -651,7 +767,7 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
         const cy = v1 + v2 - oCy;
         if (ix * ix + iy * iy <= lim * lim || cx * cx + cy * cy <= lim * lim) {
           steps--;
-          break;
+          break attempt;
         }
         // dvy/dp there (CushionModel.derivative outside a step; it also lowers the smallest
         // slip components along the step's directions).
@@ -667,7 +783,7 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
         const dvy = -c - s * gy + -(muS * n) * (cy * irC);
         if (ee2 !== 0 && !(dvy < 0)) {
           steps--;
-          break;
+          break attempt;
         }
       }
       wEnd = wc - ee2 * wc;
@@ -679,7 +795,7 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
         endAt = denseRoot(Q, 5, wEnd, from, 1);
       } else if (x1 >= 0) {
         steps--; // vy came back to zero first: stalled
-        break;
+        break attempt;
       }
     }
     if (endAt >= 0) {
@@ -697,7 +813,7 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
       }
       p += endAt * h;
       code = FAST_END;
-      break;
+      break attempt;
     }
     if (slavC) {
       m.hintCx = uCxEnd;
@@ -739,10 +855,11 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
       host.vy0 = vyStart;
       step = h;
       code = FAST_SETTLE;
-      break;
+      break attempt;
     }
     step = nextStep(h, err, errPrev);
     errPrev = errorMemory(err);
+    code = FAST_AGAIN;
   }
   if (code !== FAST_END) {
     y[0] = y0;
@@ -758,14 +875,25 @@ export function fastSteps(host: FastHost, y: Float64Array, k1: Float64Array): nu
   k1[3] = a3;
   k1[4] = a4;
   k1[5] = a5;
-  host.innerSteps += steps - host.steps;
-  host.step = step;
-  host.errPrev = errPrev;
-  host.steps = steps;
-  host.rejected = rejected;
-  host.p = p;
-  host.restitution = restitution;
-  host.wEnd = wEnd;
+  st[0] = eIx;
+  st[1] = eIy;
+  st[2] = eCx;
+  st[3] = eCy;
+  st[4] = aIx;
+  st[5] = aIy;
+  st[6] = aCx;
+  st[7] = aCy;
+  st[8] = r;
+  st[9] = rc;
+  st[10] = step;
+  st[11] = errPrev;
+  st[12] = steps;
+  st[13] = rejected;
+  st[14] = p;
+  st[15] = restitution ? 1 : 0;
+  st[16] = wEnd;
+  st[17] = slavC ? 1 : 0;
+  st[18] = slavRejects;
   return code;
 }
 

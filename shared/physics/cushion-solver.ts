@@ -13,7 +13,7 @@
 // Only + - * / and Math.sqrt. A step count cap throws: it never returns a wrong answer.
 import { denseRoot } from './cushion-dense.ts';
 import { Dopri5, DIM } from './cushion-dopri.ts';
-import { FAST_END, FAST_SETTLE, fastSteps } from './cushion-fast.ts';
+import { FAST_END, FAST_SETTLE, runFast } from './cushion-fast.ts';
 import type { FastHost } from './cushion-fast.ts';
 import { CushionModel, SLIDE, STICK } from './cushion-model.ts';
 import type { CushionOutcome } from './cushion-types.ts';
@@ -167,7 +167,7 @@ export class CushionSolver implements FastHost {
         // loop takes these steps faster (cushion-fast.ts).
         this.step = step;
         this.errPrev = errPrev;
-        const code = fastSteps(this, y, rk.k1);
+        const code = runFast(this, y, rk.k1);
         step = this.step;
         errPrev = this.errPrev;
         if (code === FAST_END) return;
