@@ -158,7 +158,7 @@ function fastBegin(host: FastHost, y: Float64Array, k1: Float64Array): void {
  * it, V8 (Node 20) sometimes re-optimized it after its one deoptimization (the first time it
  * met an operation it had not yet executed) only for entry at the loop (on-stack replacement),
  * and every call then began in unoptimized code: the whole process ran the kernel four times
- * slower (1 run in 6 of a benchmark, 3 in 4 of another). This costs about 8% against the loop
+ * slower (1 run in 6 of a benchmark, 3 in 4 of another). This costs 8 to 10% against the loop
  * when that does not happen (docs/cushion.md).
  */
 export function runFast(host: FastHost, y: Float64Array, k1: Float64Array): number {
