@@ -1,6 +1,7 @@
 // The cushion solver's inner loop for its most common stretch: both contacts slipping, neither
-// slaved, or the table contact slaved while it grows from zero (see cushion-solver.ts). It takes the steps CushionSolver's general loop would take
-// (the same Dormand-Prince steps, step limits, rejections, event location and step control) on
+// slaved, or the table contact slaved while it grows from zero (see cushion-solver.ts). It takes
+// the steps CushionSolver's general loop would take (the same Dormand-Prince steps, step
+// limits, rejections, event location and step control) on
 // local numbers, with the arithmetic arranged for a short chain from one stage to the next: the
 // four slips are stepped as variables of their own with their rates (so a stage's slip is one
 // sum away, not rebuilt from the velocities), the tableau is scaled by the step (a stage's
@@ -10,7 +11,7 @@
 // step as the general loop (docs/cushion.md). Whatever needs the rolling conditions, a
 // slaved slip or a stalled ending is handed back to the general loop at the start of the
 // iteration that needs it, or right after a step when a slip has become small. One step (taken
-// or rejected) a call of fastSteps, its state carried in S (see runFast for why).
+// or rejected) a call of fastStep, its state carried in S (see runFast for why).
 // Equations: cushion-model.ts (Mathavan et al. 2010, eq. 14 with both contacts slipping).
 import {
   errorMemory, invRoot, MAX_STEPS, nextStep, QS_EXIT, QS_GROW, QS_RHO, RELAX_MAX, TURN_MAX,
@@ -22,7 +23,7 @@ import {
 } from './cushion-tableau.ts';
 import { denseRoot, denseValue, denseVariable } from './cushion-dense.ts';
 
-/** What the general loop does next (the return value of fastSteps). */
+/** What the general loop does next (the return value of runFast and fastStep). */
 export const FAST_GENERAL = 0;
 /** The impact ended: the result is in the host's y, the outcome is 'restitution'. */
 export const FAST_END = 1;
@@ -67,14 +68,14 @@ export interface FastHost {
 
 // The continuous extension of a step (5 coefficients per variable, cushion-dense.ts).
 const Q = new Float64Array(30);
-// What fastSteps carries from one step to the next: the slips and their rates (0-9), the step
+// What fastStep carries from one step to the next: the slips and their rates (0-9), the step
 // control and counts (10-14), restitution (15), the work's target (16), C slaved (17) and
 // slaving rejections in a row (18); and the constants of a run of the inner loop (32-60,
-// fastBegin). (One array, passed to fastSteps as an argument: read from the module's scope,
+// fastBegin). (One array, passed to fastStep as an argument: read from the module's scope,
 // every element's load re-checked the array, 20% slower; two arrays, 4% slower than one.)
 const S = new Float64Array(61);
 
-/** Fills S for a run of fastSteps from the host, the state y and its derivative k1. */
+/** Fills S for a run of fastStep from the host, the state y and its derivative k1. */
 function fastBegin(host: FastHost, y: Float64Array, k1: Float64Array): void {
   const m = host.model;
   const s = m.s;
@@ -152,8 +153,8 @@ function fastBegin(host: FastHost, y: Float64Array, k1: Float64Array): void {
 }
 
 /**
- * Runs the inner loop (fastSteps) step by step until it hands back: see FAST_GENERAL, FAST_END
- * and FAST_SETTLE. One step a call keeps fastSteps free of a loop: with the steps looping inside
+ * Runs the inner loop (fastStep) step by step until it hands back: see FAST_GENERAL, FAST_END
+ * and FAST_SETTLE. One step a call keeps fastStep free of a loop: with the steps looping inside
  * it, V8 (Node 20) sometimes re-optimized it after its one deoptimization (the first time it
  * met an operation it had not yet executed) only for entry at the loop (on-stack replacement),
  * and every call then began in unoptimized code: the whole process ran the kernel four times
@@ -162,8 +163,8 @@ function fastBegin(host: FastHost, y: Float64Array, k1: Float64Array): void {
  */
 export function runFast(host: FastHost, y: Float64Array, k1: Float64Array): number {
   fastBegin(host, y, k1);
-  let code = fastSteps(host, y, k1, S);
-  while (code === FAST_AGAIN) code = fastSteps(host, y, k1, S);
+  let code = fastStep(host, y, k1, S);
+  while (code === FAST_AGAIN) code = fastStep(host, y, k1, S);
   const steps = S[12]!;
   host.innerSteps += steps - host.steps;
   host.step = S[10]!;
@@ -182,7 +183,7 @@ export function runFast(host: FastHost, y: Float64Array, k1: Float64Array): numb
  * (advanced in place), the carried state and the constants in st (S). FAST_AGAIN:
  * call again; see FAST_GENERAL, FAST_END and FAST_SETTLE for what it leaves to the caller.
  */
-export function fastSteps(
+export function fastStep(
   host: FastHost, y: Float64Array, k1: Float64Array, st: Float64Array,
 ): number {
   const m = host.model;
