@@ -64,6 +64,8 @@ export interface FastHost {
   vy0: number;
   /** Steps taken by this inner loop during the impact (a diagnostic for the tests). */
   innerSteps: number;
+  /** A slaved contact (0: I, 1: C) with slip (ex, ey), |slip| = r, follows its own direction. */
+  release(contact: number, ex: number, ey: number, r: number): void;
 }
 
 // The continuous extension of a step (5 coefficients per variable, cushion-dense.ts).
@@ -283,10 +285,7 @@ export function fastStep(
       if (rc > qsExit && lam > 0) {
         // Grown: it follows its own direction again (CushionSolver.release).
         slavC = false;
-        m.qsC = false;
-        m.frozenC = false;
-        m.refCx = eCx / rc;
-        m.refCy = eCy / rc;
+        host.release(1, eCx, eCy, rc);
       } else if (!(lam > 0) || rc > epsSlip) {
         steps--; // shrinking or partly grown: the general loop
         break attempt;

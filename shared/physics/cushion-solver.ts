@@ -537,7 +537,7 @@ export class CushionSolver implements FastHost {
   }
 
   /** A slaved contact with slip (ex, ey), |slip| = r, follows its own direction again. */
-  private release(contact: number, ex: number, ey: number, r: number): void {
+  release(contact: number, ex: number, ey: number, r: number): void {
     const m = this.model;
     if (contact === 0) {
       m.qsI = false;
@@ -636,19 +636,7 @@ export class CushionSolver implements FastHost {
           if (r <= 10 * this.epsEv) {
             this.zeroNow |= contact === 0 ? 1 : 2;
           } else {
-            if (contact === 0) m.qsI = false;
-            else m.qsC = false;
-            m.frozenI = m.frozenI && contact !== 0;
-            m.frozenC = m.frozenC && contact !== 1;
-            if (r > m.epsSlip) {
-              if (contact === 0) {
-                m.refIx = ex / r;
-                m.refIy = ey / r;
-              } else {
-                m.refCx = ex / r;
-                m.refCy = ey / r;
-              }
-            }
+            this.release(contact, ex, ey, r);
           }
           continue;
         }
