@@ -1,5 +1,5 @@
 // The one entry point of the physics module: everything server, client, tests and benchmarks use.
-export { tableSpec, isTableName, TABLE_NAMES } from './tables.ts';
+export { tableSpec, isTableName, TABLE_NAMES, cushionParamsOf } from './tables.ts';
 export type { TableName, TableSpec } from './tables.ts';
 export { cushionRebound, cushionImpact, cushionTrace } from './cushion.ts';
 export type { CushionStateOut, CushionImpact } from './cushion.ts';

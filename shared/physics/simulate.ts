@@ -12,7 +12,7 @@ import { EventQueue, Kind, type Prediction } from './event-queue.ts';
 import { hashFinalState } from './hash.ts';
 import type { FinalBall, Outcome, PathSegment, Scene, Shot, SimEvent, SimOptions } from './sim-types.ts';
 import { strikeBall } from './strike.ts';
-import type { TableSpec } from './tables.ts';
+import { cushionParamsOf, type TableSpec } from './tables.ts';
 import { validateOptions, validateScene, validateShot } from './validate-input.ts';
 
 /**
@@ -116,14 +116,7 @@ class Simulation {
     this.nextOwn = scene.balls.map(() => Infinity);
     this.impactsNow = scene.balls.map(() => 0);
     this.lastPress = scene.balls.map(() => -Infinity);
-    this.cushionParams = {
-      M: table.ballMass,
-      R: this.R,
-      h: table.cushion.height,
-      ee: table.cushion.restitution,
-      muS: table.cloth.muSlide,
-      muW: table.cushion.friction,
-    };
+    this.cushionParams = cushionParamsOf(table);
     this.balls = scene.balls.map((b, index) => ({
       id: b.id,
       index,

@@ -1,6 +1,7 @@
 // Table and ball specifications, with the physical constants in use. Lengths in metres, masses in
 // kilograms. The playing area is measured between the cushion noses; the origin is its centre,
 // x along the long side (../shared/physics.md, "Units and frames").
+import type { CushionParams } from './cushion-types.ts';
 import { buildOutline, type Cushion, type Pocket, type PocketShape } from './table-geometry.ts';
 
 export type TableName = 'pool-9ft' | 'snooker-12ft' | 'carom-match';
@@ -149,4 +150,20 @@ export function tableSpec(name: string): TableSpec {
     throw new RangeError(`unknown table "${name}": expected one of ${TABLE_NAMES.join(', ')}`);
   }
   return TABLES[name];
+}
+
+/**
+ * The constants of a table's cushion impacts (cushionRebound's params): its ball, its cushion
+ * nose, restitution and friction, and its cloth's sliding friction at the table contact. The
+ * simulation uses these; the kernel's accuracy tests use them for "each table's constants".
+ */
+export function cushionParamsOf(table: TableSpec): CushionParams {
+  return {
+    M: table.ballMass,
+    R: table.ballRadius,
+    h: table.cushion.height,
+    ee: table.cushion.restitution,
+    muS: table.cloth.muSlide,
+    muW: table.cushion.friction,
+  };
 }

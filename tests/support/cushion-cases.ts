@@ -1,17 +1,22 @@
 // Impacts defined once, shared by the cushion tests, the benchmark and the figures.
-import { tableSpec } from '../../shared/physics/index.ts';
+import { cushionParamsOf, tableSpec } from '../../shared/physics/index.ts';
 import type { CushionParams, CushionState, TableName } from '../../shared/physics/index.ts';
 
 /** Mathavan et al. 2010's constants (snooker): M, R, h = 7R/5, e_e, μ_s (table), μ_w (cushion). */
 export const PAPER: CushionParams = { M: 0.1406, R: 0.02625, h: 0.02625 * 1.4, ee: 0.98, muS: 0.212, muW: 0.14 };
 
-/**
- * Each table's ball and cushion nose from shared/physics/tables.ts, with friction and
- * restitution chosen for the tests (typical values, Alciatore's notes and the paper):
- * ball-table 0.2, ball-cushion 0.14; cushion restitution 0.85 (pool), 0.98 (snooker, the
- * paper's), 0.9 (carom).
- */
+/** Each table's own cushion-impact constants, as the simulation uses them (cushionParamsOf). */
 export function tableParams(name: TableName): CushionParams {
+  return cushionParamsOf(tableSpec(name));
+}
+
+/**
+ * The constants the regression cases below the accuracy tests were found with, before the
+ * tables carried cushion constants of their own: each table's ball and cushion nose with
+ * ball-table friction 0.2, ball-cushion friction 0.14 and cushion restitution 0.85 (pool),
+ * 0.98 (snooker), 0.9 (carom). A regression case only reproduces what it guards with these.
+ */
+export function legacyTableParams(name: TableName): CushionParams {
   const t = tableSpec(name);
   const ee = name === 'pool-9ft' ? 0.85 : name === 'snooker-12ft' ? 0.98 : 0.9;
   return { M: t.ballMass, R: t.ballRadius, h: t.cushionHeight, ee, muS: 0.2, muW: 0.14 };

@@ -7,7 +7,7 @@ import { describe, expect, it } from 'vitest';
 import { cushionImpact, cushionRebound } from '../../shared/physics/index.ts';
 import { MAX_STEPS } from '../../shared/physics/cushion-solver.ts';
 import { referenceRebound } from '../support/cushion-reference.ts';
-import { PAPER, paperState, relError, TABLE_PARAMS } from '../support/cushion-cases.ts';
+import { legacyTableParams, PAPER, paperState, relError, TABLE_PARAMS } from '../support/cushion-cases.ts';
 
 const LIMIT = 1e-5;
 const ANGLES = [0.5, 5, 20, 45, 70, 85, 89.5];
@@ -63,10 +63,10 @@ describe('accuracy against the converged reference (default setting)', () => {
   });
 
   it('a slaved slip stopping just short of zero rolls, as the reference does (regression: 3.7e-2 V0 off)', () => {
-    // Carom constants, a random draw on which a slaved slip at the cushion, aimed at zero, was
-    // left 9e-8 m/s short with its slaved direction turned across it, and slid off instead of
-    // rolling.
-    const params = TABLE_PARAMS[3]![1];
+    // The carom constants it was found with (legacyTableParams), a random draw on which a
+    // slaved slip at the cushion, aimed at zero, was left 9e-8 m/s short with its slaved
+    // direction turned across it, and slid off instead of rolling.
+    const params = legacyTableParams('carom-match');
     const V0 = 3.265877145528793;
     const s = paperState(V0, 40.74122154712677, 0.00036132335662841797, 0.44324159622192383, params.R);
     const r = referenceRebound(s, params).state;
@@ -76,10 +76,11 @@ describe('accuracy against the converged reference (default setting)', () => {
   });
 
   it('a small slip leaving a stuck spell slowly does not wobble about its direction (regression: 1.1e-5 V0 off)', () => {
-    // Pool constants: the cushion slip sticks, then leaves its cone so slowly that it stays
-    // near 1e-5 V0 for a while; steps longer than its direction's relaxation time made it
-    // oscillate about its equilibrium direction (RELAX_MAX bounds them).
-    const params = TABLE_PARAMS[1]![1];
+    // The pool constants they were found with (legacyTableParams): the cushion slip sticks,
+    // then leaves its cone so slowly that it stays near 1e-5 V0 for a while; steps longer than
+    // its direction's relaxation time made it oscillate about its equilibrium direction
+    // (RELAX_MAX bounds them).
+    const params = legacyTableParams('pool-9ft');
     for (const [V0, alpha, kT, kS] of [[2.527, 28.66, 0.5527, 1.0962], [2.241, 87.671, 1.0056, -0.5789]] as const) {
       const s = paperState(V0, alpha, kT, kS, params.R);
       const r = referenceRebound(s, params).state;
@@ -88,10 +89,11 @@ describe('accuracy against the converged reference (default setting)', () => {
   });
 
   it('a cushion slip of 8e-3 V0 is not slaved (regression: 4.3e-5 V0 off)', () => {
-    // Carom constants: with slaving allowed below 1e-2 V0 the cushion slip was slaved at 8e-3
-    // V0 near the end of the impact; its slaved direction then drifted from the true one over
-    // the long steps slaving allows (QS_RHO is now 1e-3).
-    const params = TABLE_PARAMS[3]![1];
+    // The carom constants it was found with (legacyTableParams): with slaving allowed below
+    // 1e-2 V0 the cushion slip was slaved at 8e-3 V0 near the end of the impact; its slaved
+    // direction then drifted from the true one over the long steps slaving allows (QS_RHO is
+    // now 1e-3).
+    const params = legacyTableParams('carom-match');
     const V0 = 1.916;
     const s = paperState(V0, 47.745, 0.3512, 0.2662, params.R);
     const r = referenceRebound(s, params).state;
@@ -99,10 +101,11 @@ describe('accuracy against the converged reference (default setting)', () => {
   });
 
   it('slaving is bounded by the turn of the slaved direction over a step (regression: 7.7e-6 V0 off)', () => {
-    // Pool constants: the cushion contact leaves a long stuck spell near the end of the impact
-    // and slips from zero, slaved; one step of 0.5 m/s carried it to 4e-3 V0 while its slaved
-    // direction turned, and the slip's lag behind it went unseen.
-    const params = TABLE_PARAMS[1]![1];
+    // The pool constants it was found with (legacyTableParams): the cushion contact leaves a
+    // long stuck spell near the end of the impact and slips from zero, slaved; one step of
+    // 0.5 m/s carried it to 4e-3 V0 while its slaved direction turned, and the slip's lag
+    // behind it went unseen.
+    const params = legacyTableParams('pool-9ft');
     const V0 = 2.533;
     const s = paperState(V0, 40.39592477989197, -0.14734662132263182, 0.6860342777252197, params.R);
     const r = referenceRebound(s, params).state;
