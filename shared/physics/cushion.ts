@@ -2,6 +2,7 @@
 // "A theoretical analysis of billiard ball dynamics under cushion impacts", Proc. IMechE C
 // 224(9):1863-1873; the method (an adaptive Runge-Kutta integration in the impulse with the
 // paper's rolling conditions at zero slip) is described in docs/cushion.md.
+import { EXPRESS_OUT, expressImpact } from './cushion-express.ts';
 import { CushionSolver } from './cushion-solver.ts';
 import type { CushionTracePoint } from './cushion-solver.ts';
 import type { CushionOptions, CushionOutcome, CushionParams, CushionState } from './cushion-types.ts';
@@ -28,13 +29,28 @@ export interface CushionImpact {
 // One solver reused by every call (JavaScript runs one call at a time; nothing is allocated
 // per step).
 const solver = new CushionSolver();
+/** Series steps of the last impact if the express path took it (cushion-express.ts), else 0. */
+let expressSteps = 0;
+let expressR = 1;
 
-/** Checks the input and solves the impact into `solver`; false when vy <= 0 (no impact). */
-function solve(state: CushionState, params: CushionParams, options: CushionOptions | undefined): boolean {
+/**
+ * Checks the input and solves the impact, on the express path when it takes it, else into
+ * `solver`; false when vy <= 0 (no impact). `express` false: the solver only (traces, tests).
+ */
+function solve(state: CushionState, params: CushionParams, options: CushionOptions | undefined, express: boolean): boolean {
   validateState(state);
   validateParams(params);
   const tol = resolveTolerance(options);
+  expressSteps = 0;
   if (!(state.vy > 0)) return false;
+  if (express) {
+    expressSteps = expressImpact(
+      state.vx, state.vy, state.wx, state.wy, state.wz,
+      params.R, params.h, params.ee, params.muS, params.muW, tol,
+    );
+    expressR = params.R;
+    if (expressSteps > 0) return true;
+  }
   solver.solve(
     state.vx, state.vy, state.wx, state.wy, state.wz,
     params.M, params.R, params.h, params.ee, params.muS, params.muW, tol,
@@ -42,12 +58,22 @@ function solve(state: CushionState, params: CushionParams, options: CushionOptio
   return true;
 }
 
+/** The last impact's result as a plain state (rad/s for the spins). */
+function result(): CushionStateOut {
+  if (expressSteps === 0) return solver.result();
+  const y = EXPRESS_OUT;
+  const R = expressR;
+  // + 0 turns -0 into 0.
+  return { vx: y[0]! + 0, vy: y[1]! + 0, wx: y[2]! / R + 0, wy: y[3]! / R + 0, wz: y[4]! / R + 0 };
+}
+
 function copyOf(state: CushionState): CushionStateOut {
   return { vx: state.vx, vy: state.vy, wx: state.wx, wy: state.wy, wz: state.wz };
 }
 
-function run(state: CushionState, params: CushionParams, options: CushionOptions | undefined): CushionImpact {
-  if (!solve(state, params, options)) return { state: copyOf(state), outcome: 'no-impact', steps: 0, rejectedSteps: 0 };
+function run(state: CushionState, params: CushionParams, options: CushionOptions | undefined, express: boolean): CushionImpact {
+  if (!solve(state, params, options, express)) return { state: copyOf(state), outcome: 'no-impact', steps: 0, rejectedSteps: 0 };
+  if (expressSteps > 0) return { state: result(), outcome: 'restitution', steps: expressSteps, rejectedSteps: 0 };
   return { state: solver.result(), outcome: solver.outcome, steps: solver.steps, rejectedSteps: solver.rejected };
 }
 
@@ -59,12 +85,17 @@ function run(state: CushionState, params: CushionParams, options: CushionOptions
  */
 export function cushionRebound(state: CushionState, params: CushionParams, options?: CushionOptions): CushionStateOut {
   // (Without run's record: one object per impact, this is called for every cushion hit.)
-  return solve(state, params, options) ? solver.result() : copyOf(state);
+  return solve(state, params, options, true) ? result() : copyOf(state);
 }
 
 /** cushionRebound with its outcome and step counts. */
 export function cushionImpact(state: CushionState, params: CushionParams, options?: CushionOptions): CushionImpact {
-  return run(state, params, options);
+  return run(state, params, options, true);
+}
+
+/** cushionImpact without the express path: the Runge-Kutta solver alone (for checks). */
+export function cushionImpactSolver(state: CushionState, params: CushionParams, options?: CushionOptions): CushionImpact {
+  return run(state, params, options, false);
 }
 
 /**
@@ -79,7 +110,7 @@ export function cushionTrace(
   const trace: CushionTracePoint[] = [];
   solver.trace = trace;
   try {
-    return { ...run(state, params, options), trace };
+    return { ...run(state, params, options, false), trace };
   } finally {
     solver.trace = null;
   }

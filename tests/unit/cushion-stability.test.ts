@@ -9,6 +9,7 @@ import type { CushionParams, CushionState } from '../../shared/physics/index.ts'
 import { MAX_STEPS } from '../../shared/physics/cushion-solver.ts';
 import { referenceRebound } from '../support/cushion-reference.ts';
 import { energy, PAPER, paperState, relError, TABLE_PARAMS } from '../support/cushion-cases.ts';
+import { issueRange } from '../support/cushion-arbitraries.ts';
 
 const { M, R } = PAPER;
 /** Roundoff allowance on energy: the model dissipates or (frictionless, e_e = 1) conserves. */
@@ -104,10 +105,10 @@ describe('exact zeros and symmetry', () => {
   it('mirror symmetry x -> -x (vx, wy, wz change sign; vy, wx do not) holds to 1e-12', () => {
     fc.assert(
       fc.property(
-        fc.double({ min: 0.05, max: 5, noNaN: true }),
-        fc.double({ min: 0.5, max: 89.5, noNaN: true }),
-        fc.double({ min: -1, max: 2, noNaN: true }),
-        fc.double({ min: -2, max: 2, noNaN: true }),
+        issueRange.V0,
+        issueRange.alpha,
+        issueRange.kT,
+        issueRange.kS,
         (V0, alpha, kT, kS) => {
           const s = paperState(V0, alpha, kT, kS, R);
           const a = cushionRebound(s, PAPER);

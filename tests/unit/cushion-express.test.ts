@@ -1,0 +1,180 @@
+// The cushion impact's express path (shared/physics/cushion-express.ts): Taylor series steps of
+// order 8 (shared/physics/cushion-series.ts) while both slips stay away from zero, the
+// Runge-Kutta solver otherwise. Its accuracy against the converged reference is tested with the
+// rest of the kernel (cushion-accuracy.test.ts goes through cushionRebound); here: the series is
+// the equations' own, the path is taken where it should be and declines where it should, and it
+// agrees with the solver.
+import fc from 'fast-check';
+import { describe, expect, it } from 'vitest';
+import { cushionImpactSolver } from '../../shared/physics/cushion.ts';
+import { EXPRESS_OUT, EXPRESS_SLIP_MIN, expressImpact } from '../../shared/physics/cushion-express.ts';
+import { CushionModel } from '../../shared/physics/cushion-model.ts';
+import { cushionSeries, SERIES_TERMS } from '../../shared/physics/cushion-series.ts';
+import { cushionImpact } from '../../shared/physics/index.ts';
+import type { CushionParams, CushionState } from '../../shared/physics/index.ts';
+import { benchGrid, PAPER, paperState, relError, TABLE_PARAMS } from '../support/cushion-cases.ts';
+import { issueImpact } from '../support/cushion-arbitraries.ts';
+
+const NT = SERIES_TERMS;
+
+/** The series' constants, as expressImpact sets them. */
+function constants(p: CushionParams): { s: number; c: number; k: Float64Array } {
+  const s = (p.h - p.R) / p.R;
+  const c = Math.sqrt((1 - s) * (1 + s));
+  const { muS, muW } = p;
+  const k = new Float64Array([
+    s, c, -muW, -(muS * c * muW), muS * s, -3.5 * muW, 1 - 2.5 * s, -(s * s + 2.5) * muW, 2.5 - s,
+    -(1 - 2.5 * s) * muW, -(2.5 - s) * muW, s * c,
+  ]);
+  return { s, c, k };
+}
+
+function internal(st: CushionState, R: number): Float64Array {
+  return new Float64Array([st.vx, st.vy, R * st.wx, R * st.wy, R * st.wz, 0]);
+}
+
+function express(st: CushionState, p: CushionParams, tol = 1e-6): number[] | null {
+  const n = expressImpact(st.vx, st.vy, st.wx, st.wy, st.wz, p.R, p.h, p.ee, p.muS, p.muW, tol);
+  if (n === 0) return null;
+  return [EXPRESS_OUT[0]!, EXPRESS_OUT[1]!, EXPRESS_OUT[2]! / p.R, EXPRESS_OUT[3]! / p.R, EXPRESS_OUT[4]! / p.R];
+}
+
+function asState(v: number[]): CushionState {
+  return { vx: v[0]!, vy: v[1]!, wx: v[2]!, wy: v[3]!, wz: v[4]! };
+}
+
+describe('cushion series', () => {
+  it('is the Taylor series of the equations: a fine Runge-Kutta integration of the model lands on it', () => {
+    const model = new CushionModel();
+    for (const [, p] of TABLE_PARAMS) {
+      const { s, c, k } = constants(p);
+      model.setConstants(s, c, p.muW, p.muS);
+      for (const [alpha, kT, kS] of [[30, 0, 1], [60, 2, -1], [10, -1, 2], [80, 0.5, 0]] as const) {
+        const st = paperState(1, alpha, kT, kS, p.R);
+        const y0 = internal(st, p.R);
+        const q = new Float64Array(6 * NT);
+        expect(cushionSeries(y0, q, k)).toBe(true);
+        // Classic RK4 with the model's derivative over a short impulse, to rounding.
+        const span = 0.05 * st.vy / c;
+        const n = 400;
+        const dp = span / n;
+        const y = Float64Array.from(y0);
+        const k1 = new Float64Array(6);
+        const k2 = new Float64Array(6);
+        const k3 = new Float64Array(6);
+        const k4 = new Float64Array(6);
+        const t = new Float64Array(6);
+        for (let i = 0; i < n; i++) {
+          model.derivative(y, k1);
+          for (let j = 0; j < 6; j++) t[j] = y[j]! + 0.5 * dp * k1[j]!;
+          model.derivative(t, k2);
+          for (let j = 0; j < 6; j++) t[j] = y[j]! + 0.5 * dp * k2[j]!;
+          model.derivative(t, k3);
+          for (let j = 0; j < 6; j++) t[j] = y[j]! + dp * k3[j]!;
+          model.derivative(t, k4);
+          for (let j = 0; j < 6; j++) y[j] = y[j]! + (dp / 6) * (k1[j]! + 2 * k2[j]! + 2 * k3[j]! + k4[j]!);
+        }
+        for (let j = 0; j < 6; j++) {
+          let v = q[j * NT + NT - 1]!;
+          for (let m = NT - 2; m >= 0; m--) v = v * span + q[j * NT + m]!;
+          expect(Math.abs(v - y[j]!), `${alpha} ${kT} ${kS} variable ${j}`).toBeLessThan(1e-12);
+        }
+        // Its first coefficient is the model's derivative.
+        model.derivative(y0, k1);
+        for (let j = 0; j < 6; j++) expect(Math.abs(q[j * NT + 1]! - k1[j]!)).toBeLessThan(1e-14);
+      }
+    }
+  });
+});
+
+describe('express path', () => {
+  it('takes most of the benchmark grid and agrees with the solver there, for every set of constants', () => {
+    for (const [name, p] of TABLE_PARAMS) {
+      let taken = 0;
+      let worst = 0;
+      let seriesSteps = 0;
+      let solverSteps = 0;
+      const grid = benchGrid(p.R);
+      for (const g of grid) {
+        const x = express(g.state, p);
+        if (x === null) continue;
+        taken++;
+        const solver = cushionImpactSolver(g.state, p);
+        worst = Math.max(worst, relError(asState(x), solver.state, p.R, g.V0));
+        // cushionImpact reports it: the series steps, none rejected.
+        const k = cushionImpact(g.state, p);
+        expect(k.rejectedSteps).toBe(0);
+        seriesSteps += k.steps;
+        solverSteps += solver.steps;
+      }
+      expect(taken / grid.length, name).toBeGreaterThan(0.5);
+      // Longer steps: what the path is for.
+      expect(seriesSteps, name).toBeLessThan(0.8 * solverSteps);
+      // Each is within about 3e-6 V0 of the converged solution (the accuracy tests).
+      expect(worst, name).toBeLessThan(6e-6);
+    }
+  });
+
+  it('agrees with the solver on random impacts with the tables\' constants', () => {
+    fc.assert(
+      fc.property(issueImpact, ({ V0, params: p, state: st }) => {
+        const x = express(st, p);
+        if (x === null) return;
+        expect(relError(asState(x), cushionImpactSolver(st, p).state, p.R, V0)).toBeLessThan(6e-6);
+      }),
+      { numRuns: 300, seed: 20261122 },
+    );
+  });
+
+  it('takes a ball rolling on the cloth (table slip zero) from the start, as the solver does', () => {
+    for (const [name, p] of TABLE_PARAMS) {
+      let taken = 0;
+      let n = 0;
+      for (let alpha = 5; alpha < 90; alpha += 10) {
+        for (const kS of [-2, -1, 0, 0.5, 1.5]) {
+          const st = paperState(1.5, alpha, 1, kS, p.R);
+          n++;
+          const x = express(st, p);
+          if (x === null) continue;
+          taken++;
+          expect(relError(asState(x), cushionImpactSolver(st, p).state, p.R, 1.5)).toBeLessThan(6e-6);
+        }
+      }
+      expect(taken / n, name).toBeGreaterThan(0.6);
+    }
+  });
+
+  it('declines a table contact that keeps rolling, and slips that start or come near zero', () => {
+    // Head-on natural roll with table friction 0.7: the friction that keeps the table contact
+    // rolling is inside its cone (the solver's rolling conditions).
+    const roll = { vx: 0, vy: 1, wx: -1 / PAPER.R, wy: 0, wz: 0 };
+    expect(express(roll, PAPER)).not.toBeNull();
+    expect(express(roll, { ...PAPER, muS: 0.7 })).toBeNull();
+    // Head-on with no spin: the cushion slip shrinks to zero and sticks.
+    const headOn = paperState(1, 89.5, 0, 0, PAPER.R);
+    expect(express(headOn, PAPER)).toBeNull();
+    expect(cushionImpact(headOn, PAPER).steps).toBe(cushionImpactSolver(headOn, PAPER).steps);
+    // A table slip just below the threshold at the start (not zero): (vx - R ωy, vy + R ωx) = (e, 0).
+    const st = { vx: 0.6, vy: 0.8, wx: -0.8 / PAPER.R, wy: 0, wz: 0 };
+    const e = EXPRESS_SLIP_MIN * 0.99;
+    expect(express({ ...st, wy: (st.vx - e) / PAPER.R }, PAPER)).toBeNull();
+  });
+
+  it('declines constants with which the table could stop pushing or the cushion could stop pushing out', () => {
+    const st = paperState(1, 15, 2, 2, PAPER.R);
+    expect(express(st, PAPER)).not.toBeNull();
+    // sinθ = 0.05 < μw cosθ: the table's normal impulse could reach zero.
+    expect(express(st, { ...PAPER, h: 1.05 * PAPER.R, muW: 0.2 })).toBeNull();
+    // μw sinθ + μs (sinθ + μw cosθ) >= cosθ: the impulse could stop pushing the ball out.
+    expect(express(st, { ...PAPER, muS: 2, muW: 0.1 })).toBeNull();
+  });
+
+  it('ends at the end of compression with e_e = 0, as the solver does', () => {
+    const p = { ...PAPER, ee: 0 };
+    const st = paperState(2, 40, 0.5, -1, p.R);
+    const x = express(st, p);
+    expect(x).not.toBeNull();
+    expect(Math.abs(x![1]!)).toBeLessThan(1e-9);
+    expect(relError(asState(x!), cushionImpactSolver(st, p).state, p.R, 2)).toBeLessThan(6e-6);
+  });
+});
