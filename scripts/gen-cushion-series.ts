@@ -44,6 +44,12 @@ w('// cushion-model.ts), by the recurrences described in the generator. Only + -
 w('');
 w(`/** Coefficients a series has: orders 0 to ${N}. */`);
 w(`export const SERIES_TERMS = ${N + 1};`);
+w('/**');
+w(' * Where the series functions leave, after the six series, the impulse after which a shrinking');
+w(' * slip reaches k[12] at its present rate (Infinity when none shrinks; the table slip left out');
+w(' * while it grows from zero).');
+w(' */');
+w(`export const SERIES_CUT = ${6 * (N + 1)};`);
 w('');
 /**
  * Emits one series function. rolling: the table slip is zero at the start and grows (a ball
@@ -61,9 +67,9 @@ function emit(rolling: boolean): void {
     w(' * table\'s normal impulse is not positive.');
   } else {
     w(' * Fills q with the series of y about the state y: variable i\'s coefficient of p^k at');
-    w(` * q[${N + 1} i + k]. k holds the constants (cushion-express.ts). False, with q unspecified,`);
-    w(' * when the table\'s normal impulse is not positive at the start (its clamp at 0 would make');
-    w(' * the series wrong).');
+    w(` * q[${N + 1} i + k], and q[SERIES_CUT]. k holds the constants (cushion-express.ts). False,`);
+    w(' * with q unspecified, when the table\'s normal impulse is not positive at the start (its');
+    w(' * clamp at 0 would make the series wrong).');
   }
   w(' */');
   w(`export function ${name}(y: Float64Array, q: Float64Array, k: Float64Array): boolean {`);
@@ -79,6 +85,7 @@ function emit(rolling: boolean): void {
   w('  const wCx = k[9]!;');
   w('  const wCy = k[10]!;');
   w('  const sc = k[11]!;');
+  w('  const lim = k[12]!;');
   for (let i = 0; i < 6; i++) w(`  const y${i}_0 = y[${i}]!;`);
   w('  // The slips (cushion-model.ts, paper eqs. 12, 13).');
   w('  const eIx0 = y0_0 + s * y3_0 - c * y4_0;');
@@ -91,6 +98,14 @@ function emit(rolling: boolean): void {
     w(`  // Order ${k}.`);
     for (const [C, X, Y] of (rolling ? [['I', 'eIx', 'eIy']] : [['I', 'eIx', 'eIy'], ['C', 'eCx', 'eCy']]) as [string, string, string][]) {
       directions(k, C, X, Y);
+    }
+    if (k === 1) {
+      // The impulse after which a shrinking slip reaches lim at its present rate (r_1 is the
+      // rate of its speed), for the step control (cushion-express.ts); computed here, beside
+      // the later orders, rather than after them.
+      w(`  ${rolling ? 'const' : 'let'} cut = rI1 < 0 ? (rI0 - lim) / -rI1 : Infinity;`);
+      if (!rolling) w('  if (rC1 < 0 && (rC0 - lim) / -rC1 < cut) cut = (rC0 - lim) / -rC1;');
+      w(`  q[${6 * (N + 1)}] = cut;`);
     }
     // -μs A = kMu u_I,y - μs sinθ, and h = -μs A u_C (a product of series).
     if (k === 0) {

@@ -13,15 +13,15 @@
 // enforce, when it does grow (otherwise the table contact rolls: the solver's rolling
 // conditions).
 //
-// It declines (returns 0, and the solver takes the impact from the start) whenever the impact
-// leaves the one smooth branch it integrates: a slip below EXPRESS_SLIP_MIN of the speed at the
+// It declines whenever the impact leaves the one smooth branch it integrates (the solver takes
+// the impact from its start, or continues it from the start of the step that left): a slip below EXPRESS_SLIP_MIN of the speed at the
 // start (other than a zero table slip), at a step's end or its middle (a slip near zero calls for the rolling conditions and
 // for the solver's slaving), constants with which the table's normal impulse could reach zero
 // or the cushion's impulse could stop pushing the ball out (sinθ <= μw cosθ, or
 // μw sinθ + μs (sinθ + μw cosθ) >= cosθ; never with the tables' constants), more than
 // EXPRESS_MAX_STEPS steps, or a result with more energy than the ball brought (see finish).
 import { ZERO_FRACTION } from './cushion-control.ts';
-import { cushionSeries, cushionSeriesRolling, SERIES_TERMS } from './cushion-series.ts';
+import { cushionSeries, cushionSeriesRolling, SERIES_CUT, SERIES_TERMS } from './cushion-series.ts';
 
 /**
  * The series step's error tolerance, as a multiple of the solver's. With 1 the largest errors
@@ -37,14 +37,22 @@ export const EXPRESS_MAX_STEPS = 16;
 const NT = SERIES_TERMS;
 const ORDER = NT - 1;
 // The series (6 variables × NT coefficients), its constants and the state at a step's start.
-const Q = new Float64Array(6 * NT);
-const K = new Float64Array(12);
+const Q = new Float64Array(SERIES_CUT + 1);
+const K = new Float64Array(13);
 const Y = new Float64Array(6);
+/** The state at the start of the step the express path left on (see EXPRESS_HANDOVER). */
+export const EXPRESS_FROM: Float64Array = Y;
 // The state at a step's end and in its middle (the slips are checked at both).
 const END = new Float64Array(6);
 const MID = new Float64Array(6);
 /** The express result, in the internal variables [vx, vy, R ωx, R ωy, R ωz, W]. */
 export const EXPRESS_OUT = new Float64Array(6);
+/**
+ * Where the solver continues an impact the express path left after some steps: the state
+ * (internal variables, EXPRESS_FROM), whether compression has ended, the work's target and the
+ * impulse per unit mass so far.
+ */
+export const EXPRESS_HANDOVER = { restitution: false, wEnd: 0, p: 0 };
 
 /** Variable i of series q at p = t (Horner). */
 function at(q: Float64Array, i: number, t: number): number {
@@ -123,8 +131,9 @@ function slipsAbove(z: Float64Array, s: number, c: number, minC2: number, minI2:
 
 /**
  * The impact of a ball with vy > 0 (checked by the caller) on the express path: the number of
- * series steps it took, with the result in EXPRESS_OUT, or 0 when it declines (see the header).
- * tol is the solver's tolerance (relative to the speed).
+ * series steps it took, with the result in EXPRESS_OUT; 0 when it declines at the start; minus
+ * the steps it took when it leaves its branch later (the solver continues from EXPRESS_FROM and
+ * EXPRESS_HANDOVER). tol is the solver's tolerance (relative to the speed).
  */
 export function expressImpact(
   vx: number, vy: number, wx: number, wy: number, wz: number,
@@ -166,6 +175,7 @@ export function expressImpact(
   K[9] = -(1 - 2.5 * s) * muW;
   K[10] = -(2.5 - s) * muW;
   K[11] = s * c;
+  K[12] = lim;
   Y[0] = vx;
   Y[1] = vy;
   Y[2] = ox;
@@ -192,10 +202,15 @@ export function expressImpact(
   const e0 = vx * vx + vy * vy + 0.4 * (ox * ox + oy * oy + oz * oz);
   let restitution = false;
   let wEnd = 0;
+  let p = 0;
   const q = Q;
   const y = Y;
   for (let step = 1; step <= EXPRESS_MAX_STEPS; step++) {
-    if (!(rolling ? cushionSeriesRolling(y, q, K) : cushionSeries(y, q, K))) return 0;
+    // If this step leaves the branch, the solver continues from its start (handOver).
+    const rest0 = restitution;
+    const wEnd0 = wEnd;
+    const done = 1 - step; // 0 or minus the steps taken
+    if (!(rolling ? cushionSeriesRolling(y, q, K) : cushionSeries(y, q, K))) return handOver(rest0, wEnd0, p, done);
     // The step from the series' two last terms (after Jorba and Zou 2005): the largest h with
     // |a_k L^k| (h / L)^8 within the tolerance for k = 7 and 8, each variable against its weight.
     let n7 = Math.abs(q[5 * NT + ORDER - 1]!) * iw;
@@ -211,6 +226,17 @@ export function expressImpact(
     const n = n7 > n8 ? n7 : n8;
     let dp = n > 0 ? L / Math.sqrt(Math.sqrt(Math.sqrt(n))) : hMax;
     if (!(dp <= hMax)) dp = hMax;
+    // A shrinking slip is not carried below EXPRESS_SLIP_MIN by a step, as predicted from its
+    // rate along itself (as the solver aims its steps at a slip's zero): a slip closing on zero
+    // nearly head-on makes the series' last terms small however near the zero is (its direction
+    // flips across a width that those terms cannot see), and past it the series would go on
+    // slipping where the contact sticks. Where that leaves less than a quarter step, the solver
+    // continues from here.
+    const cut = q[SERIES_CUT]!;
+    if (cut < dp) {
+      if (cut < 0.25 * dp) return handOver(rest0, wEnd0, p, done);
+      dp = cut;
+    }
     let from = 0;
     const end = END;
     atAll(q, dp, end);
@@ -220,20 +246,32 @@ export function expressImpact(
       const wc = at(q, 5, from);
       wEnd = wc - ee2 * wc;
       restitution = true;
-      if (ee2 === 0) return finish(q, from, step, e0);
+      if (ee2 === 0) return finish(q, from, e0) ? step : handOver(rest0, wEnd0, p, done);
     }
     if (restitution) {
-      if (end[5]! <= wEnd) return finish(q, root(q, 5, wEnd, from, dp, workStart(q, wEnd)), step, e0);
-      if (end[1]! >= 0) return 0; // vy back at zero: stalled (the solver decides)
+      if (end[5]! <= wEnd) {
+        return finish(q, root(q, 5, wEnd, from, dp, workStart(q, wEnd)), e0) ? step : handOver(rest0, wEnd0, p, done);
+      }
+      if (end[1]! >= 0) return handOver(rest0, wEnd0, p, done); // vy back at zero: stalled (the solver decides)
     }
-    if (!slipsAbove(end, s, c, min2, min2)) return 0;
+    if (!slipsAbove(end, s, c, min2, min2)) return handOver(rest0, wEnd0, p, done);
     atAll(q, 0.5 * dp, MID);
     // (A table slip growing from zero is small in the first step's middle, and that is fine.)
-    if (!slipsAbove(MID, s, c, rolling ? -1 : min2, min2)) return 0;
+    if (!slipsAbove(MID, s, c, rolling ? -1 : min2, min2)) return handOver(rest0, wEnd0, p, done);
     rolling = false;
     for (let i = 0; i < 6; i++) y[i] = end[i]!;
+    p += dp;
   }
-  return 0;
+  return handOver(restitution, wEnd, p, -EXPRESS_MAX_STEPS);
+}
+
+/** Records where the solver continues (EXPRESS_HANDOVER, with EXPRESS_FROM) and returns code. */
+function handOver(restitution: boolean, wEnd: number, p: number, code: number): number {
+  const h = EXPRESS_HANDOVER;
+  h.restitution = restitution;
+  h.wEnd = wEnd;
+  h.p = p;
+  return code;
 }
 
 /**
@@ -252,14 +290,13 @@ function workStart(q: Float64Array, target: number): number {
 }
 
 /**
- * The result at p = t into EXPRESS_OUT: the number of steps, or 0 (declined) when it has more
- * kinetic and rotational energy than e0 (the same sum at the start). The model only dissipates;
- * near grazing, with e_e near 1, it dissipates so little that the series' error could show as a
- * gain, which the solver, stepping more finely there, does not make.
+ * The result at p = t into EXPRESS_OUT; false (the solver continues from the step's start) when
+ * it has more kinetic and rotational energy than e0 (the same sum at the start). The model only
+ * dissipates; near grazing, with e_e near 1, it dissipates so little that the series' error
+ * could show as a gain, which the solver, stepping more finely there, does not make.
  */
-function finish(q: Float64Array, t: number, steps: number, e0: number): number {
+function finish(q: Float64Array, t: number, e0: number): boolean {
   const o = EXPRESS_OUT;
   atAll(q, t, o);
-  const e = o[0]! * o[0]! + o[1]! * o[1]! + 0.4 * (o[2]! * o[2]! + o[3]! * o[3]! + o[4]! * o[4]!);
-  return e <= e0 ? steps : 0;
+  return o[0]! * o[0]! + o[1]! * o[1]! + 0.4 * (o[2]! * o[2]! + o[3]! * o[3]! + o[4]! * o[4]!) <= e0;
 }

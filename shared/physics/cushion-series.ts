@@ -5,12 +5,18 @@
 
 /** Coefficients a series has: orders 0 to 8. */
 export const SERIES_TERMS = 9;
+/**
+ * Where the series functions leave, after the six series, the impulse after which a shrinking
+ * slip reaches k[12] at its present rate (Infinity when none shrinks; the table slip left out
+ * while it grows from zero).
+ */
+export const SERIES_CUT = 54;
 
 /**
  * Fills q with the series of y about the state y: variable i's coefficient of p^k at
- * q[9 i + k]. k holds the constants (cushion-express.ts). False, with q unspecified,
- * when the table's normal impulse is not positive at the start (its clamp at 0 would make
- * the series wrong).
+ * q[9 i + k], and q[SERIES_CUT]. k holds the constants (cushion-express.ts). False,
+ * with q unspecified, when the table's normal impulse is not positive at the start (its
+ * clamp at 0 would make the series wrong).
  */
 export function cushionSeries(y: Float64Array, q: Float64Array, k: Float64Array): boolean {
   const s = k[0]!;
@@ -25,6 +31,7 @@ export function cushionSeries(y: Float64Array, q: Float64Array, k: Float64Array)
   const wCx = k[9]!;
   const wCy = k[10]!;
   const sc = k[11]!;
+  const lim = k[12]!;
   const y0_0 = y[0]!;
   const y1_0 = y[1]!;
   const y2_0 = y[2]!;
@@ -71,6 +78,9 @@ export function cushionSeries(y: Float64Array, q: Float64Array, k: Float64Array)
   const rC1 = (eCx0 * eCx1 + eCy0 * eCy1) * iC;
   const uCx1 = (eCx1 - rC1 * uCx0) * iC;
   const uCy1 = (eCy1 - rC1 * uCy0) * iC;
+  let cut = rI1 < 0 ? (rI0 - lim) / -rI1 : Infinity;
+  if (rC1 < 0 && (rC0 - lim) / -rC1 < cut) cut = (rC0 - lim) / -rC1;
+  q[54] = cut;
   const nm1 = kMu * uIy1;
   const hx1 = nm0 * uCx1 + nm1 * uCx0;
   const hy1 = nm0 * uCy1 + nm1 * uCy0;
@@ -261,6 +271,7 @@ export function cushionSeriesRolling(y: Float64Array, q: Float64Array, k: Float6
   const wCx = k[9]!;
   const wCy = k[10]!;
   const sc = k[11]!;
+  const lim = k[12]!;
   const y0_0 = y[0]!;
   const y1_0 = y[1]!;
   const y2_0 = y[2]!;
@@ -307,6 +318,8 @@ export function cushionSeriesRolling(y: Float64Array, q: Float64Array, k: Float6
   const rI1 = (eIx0 * eIx1 + eIy0 * eIy1) * iI;
   const uIx1 = (eIx1 - rI1 * uIx0) * iI;
   const uIy1 = (eIy1 - rI1 * uIy0) * iI;
+  const cut = rI1 < 0 ? (rI0 - lim) / -rI1 : Infinity;
+  q[54] = cut;
   const nm1 = kMu * uIy1;
   const oC1 = 0;
   const Sx1 = 0;

@@ -104,23 +104,47 @@ export class CushionSolver implements FastHost {
     M: number, R: number, h: number, ee: number, muS: number, muW: number,
     tol: number,
   ): void {
-    const model = this.model;
-    const rk = this.rk;
+    this.begin(vx, vy, M, R, h, ee, muS, muW, tol);
     const y = this.y;
-    const s = (h - R) / R;
-    const c = Math.sqrt((1 - s) * (1 + s));
-    model.setConstants(s, c, muW, muS);
-    this.M = M;
-    this.R = R;
     y[0] = vx;
     y[1] = vy;
     y[2] = R * wx;
     y[3] = R * wy;
     y[4] = R * wz;
     y[5] = 0;
+    this.run(vy);
+  }
+
+  /**
+   * Continues an impact that began with velocity (vx0, vy0) (its tolerances are that impact's)
+   * from the internal state `from` = [vx, vy, R ωx, R ωy, R ωz, W] at impulse p (per unit mass),
+   * in compression or restitution (with the work's target wEnd): the express path hands over
+   * here when it leaves its branch (cushion-express.ts).
+   */
+  resume(
+    vx0: number, vy0: number, M: number, R: number, h: number, ee: number, muS: number, muW: number,
+    tol: number, from: Float64Array, restitution: boolean, wEnd: number, p: number,
+  ): void {
+    this.begin(vx0, vy0, M, R, h, ee, muS, muW, tol);
+    copy6(from, this.y);
+    this.restitution = restitution;
+    this.wEnd = wEnd;
+    this.p = p;
+    this.run(vy0);
+  }
+
+  /** The constants and tolerances of an impact that begins with velocity (vx, vy). */
+  private begin(
+    vx: number, vy: number, M: number, R: number, h: number, ee: number, muS: number, muW: number, tol: number,
+  ): void {
+    const model = this.model;
+    const s = (h - R) / R;
+    const c = Math.sqrt((1 - s) * (1 + s));
+    model.setConstants(s, c, muW, muS);
+    this.M = M;
+    this.R = R;
     const V = Math.sqrt(vx * vx + vy * vy);
     const at = tol * V;
-    const tolV = at;
     this.V = V;
     const atol = this.atol;
     for (let i = 0; i < 5; i++) atol[i] = at;
@@ -140,8 +164,20 @@ export class CushionSolver implements FastHost {
     this.innerSteps = 0;
     this.rejected = 0;
     this.outcome = 'restitution';
-    const ee2 = ee * ee;
-    this.ee2 = ee2;
+    this.ee2 = ee * ee;
+  }
+
+  /** The integration from y, for an impact that began with vy = vy0. */
+  private run(vy0: number): void {
+    const model = this.model;
+    const rk = this.rk;
+    const y = this.y;
+    const c = model.c;
+    const M = this.M;
+    const V = this.V;
+    const tolV = this.atolV;
+    const ee2 = this.ee2;
+    const atol = this.atol;
 
     // A slip that is zero at the start (e.g. a ball rolling on the cloth).
     const eps0 = ZERO_FRACTION * V;
@@ -154,7 +190,7 @@ export class CushionSolver implements FastHost {
     model.derivative(y, rk.k1);
     this.recordTrace(0, 0);
 
-    let step = 0.25 * vy / c;
+    let step = 0.25 * vy0 / c;
     let errPrev = FIRST_MEMORY;
     for (;;) {
       if (this.fastLoop && this.trace === null && (model.qsI || model.qsC) && model.modeI === SLIDE &&

@@ -2,7 +2,7 @@
 // "A theoretical analysis of billiard ball dynamics under cushion impacts", Proc. IMechE C
 // 224(9):1863-1873; the method (an adaptive Runge-Kutta integration in the impulse with the
 // paper's rolling conditions at zero slip) is described in docs/cushion.md.
-import { EXPRESS_OUT, expressImpact } from './cushion-express.ts';
+import { EXPRESS_FROM, EXPRESS_HANDOVER, EXPRESS_OUT, expressImpact } from './cushion-express.ts';
 import { CushionSolver } from './cushion-solver.ts';
 import type { CushionTracePoint } from './cushion-solver.ts';
 import type { CushionOptions, CushionOutcome, CushionParams, CushionState } from './cushion-types.ts';
@@ -29,32 +29,40 @@ export interface CushionImpact {
 // One solver reused by every call (JavaScript runs one call at a time; nothing is allocated
 // per step).
 const solver = new CushionSolver();
-/** Series steps of the last impact if the express path took it (cushion-express.ts), else 0. */
+/** Series steps of the last impact if the express path ended it (cushion-express.ts), else 0. */
 let expressSteps = 0;
+/** Series steps the express path took before the solver continued the last impact. */
+let expressBefore = 0;
 let expressR = 1;
 
 /**
- * Checks the input and solves the impact, on the express path when it takes it, else into
- * `solver`; false when vy <= 0 (no impact). `express` false: the solver only (traces, tests).
+ * Checks the input and solves the impact: on the express path, or by the solver from the start
+ * or from where the express path left; false when vy <= 0 (no impact). `express` false: the
+ * solver only (traces, tests).
  */
 function solve(state: CushionState, params: CushionParams, options: CushionOptions | undefined, express: boolean): boolean {
   validateState(state);
   validateParams(params);
   const tol = resolveTolerance(options);
   expressSteps = 0;
+  expressBefore = 0;
   if (!(state.vy > 0)) return false;
+  const { M, R, h, ee, muS, muW } = params;
   if (express) {
-    expressSteps = expressImpact(
-      state.vx, state.vy, state.wx, state.wy, state.wz,
-      params.R, params.h, params.ee, params.muS, params.muW, tol,
-    );
-    expressR = params.R;
-    if (expressSteps > 0) return true;
+    const n = expressImpact(state.vx, state.vy, state.wx, state.wy, state.wz, R, h, ee, muS, muW, tol);
+    expressR = R;
+    if (n > 0) {
+      expressSteps = n;
+      return true;
+    }
+    if (n < 0) {
+      expressBefore = -n;
+      const at = EXPRESS_HANDOVER;
+      solver.resume(state.vx, state.vy, M, R, h, ee, muS, muW, tol, EXPRESS_FROM, at.restitution, at.wEnd, at.p);
+      return true;
+    }
   }
-  solver.solve(
-    state.vx, state.vy, state.wx, state.wy, state.wz,
-    params.M, params.R, params.h, params.ee, params.muS, params.muW, tol,
-  );
+  solver.solve(state.vx, state.vy, state.wx, state.wy, state.wz, M, R, h, ee, muS, muW, tol);
   return true;
 }
 
@@ -74,7 +82,7 @@ function copyOf(state: CushionState): CushionStateOut {
 function run(state: CushionState, params: CushionParams, options: CushionOptions | undefined, express: boolean): CushionImpact {
   if (!solve(state, params, options, express)) return { state: copyOf(state), outcome: 'no-impact', steps: 0, rejectedSteps: 0 };
   if (expressSteps > 0) return { state: result(), outcome: 'restitution', steps: expressSteps, rejectedSteps: 0 };
-  return { state: solver.result(), outcome: solver.outcome, steps: solver.steps, rejectedSteps: solver.rejected };
+  return { state: solver.result(), outcome: solver.outcome, steps: expressBefore + solver.steps, rejectedSteps: solver.rejected };
 }
 
 /**
