@@ -15,7 +15,7 @@
 //
 // It declines whenever the impact leaves the one smooth branch it integrates (the solver takes
 // the impact from its start, or continues it from the start of the step that left): a slip below EXPRESS_SLIP_MIN of the speed at the
-// start (other than a zero table slip), at a step's end or its middle (a slip near zero calls for the rolling conditions and
+// start (other than a zero table slip) or at a step's end (a slip near zero calls for the rolling conditions and
 // for the solver's slaving), constants with which the table's normal impulse could reach zero
 // or the cushion's impulse could stop pushing the ball out (sinθ <= μw cosθ, or
 // μw sinθ + μs (sinθ + μw cosθ) >= cosθ; never with the tables' constants), more than
@@ -42,9 +42,8 @@ const K = new Float64Array(13);
 const Y = new Float64Array(6);
 /** The state at the start of the step the express path left on (see EXPRESS_HANDOVER). */
 export const EXPRESS_FROM: Float64Array = Y;
-// The state at a step's end and in its middle (the slips are checked at both).
+// The state at a step's end.
 const END = new Float64Array(6);
-const MID = new Float64Array(6);
 /** The express result, in the internal variables [vx, vy, R ωx, R ωy, R ωz, W]. */
 export const EXPRESS_OUT = new Float64Array(6);
 /**
@@ -120,13 +119,13 @@ function root(q: Float64Array, i: number, target: number, lo: number, hi: number
   return x;
 }
 
-/** Whether the table slip of state z is at least √minC2 and the cushion slip at least √minI2. */
-function slipsAbove(z: Float64Array, s: number, c: number, minC2: number, minI2: number): boolean {
+/** Whether both slips of state z are at least √min2. */
+function slipsAbove(z: Float64Array, s: number, c: number, min2: number): boolean {
   const ix = z[0]! + s * z[3]! - c * z[4]!;
   const iy = z[2]! - s * z[1]!;
   const cx = z[0]! - z[3]!;
   const cy = z[1]! + z[2]!;
-  return ix * ix + iy * iy >= minI2 && cx * cx + cy * cy >= minC2;
+  return ix * ix + iy * iy >= min2 && cx * cx + cy * cy >= min2;
 }
 
 /**
@@ -254,10 +253,11 @@ export function expressImpact(
       }
       if (end[1]! >= 0) return handOver(rest0, wEnd0, p, done); // vy back at zero: stalled (the solver decides)
     }
-    if (!slipsAbove(end, s, c, min2, min2)) return handOver(rest0, wEnd0, p, done);
-    atAll(q, 0.5 * dp, MID);
-    // (A table slip growing from zero is small in the first step's middle, and that is fine.)
-    if (!slipsAbove(MID, s, c, rolling ? -1 : min2, min2)) return handOver(rest0, wEnd0, p, done);
+    // The slips at the step's end only: with the cut above, a slip whose closest approach to zero
+    // is below the threshold reaches the step's end before it (to first order in the step), so a
+    // dip inside the step shows at its end. (A check in the middle as well never fired over
+    // 217,836 impacts, random and structured, and cost 9% of the time.)
+    if (!slipsAbove(end, s, c, min2)) return handOver(rest0, wEnd0, p, done);
     rolling = false;
     for (let i = 0; i < 6; i++) y[i] = end[i]!;
     p += dp;
