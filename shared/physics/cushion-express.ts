@@ -21,7 +21,9 @@
 // μw sinθ + μs (sinθ + μw cosθ) >= cosθ; never with the tables' constants), more than
 // EXPRESS_MAX_STEPS steps, or a result with more energy than the ball brought (see finish).
 import { ZERO_FRACTION } from './cushion-control.ts';
-import { cushionSeries, cushionSeriesRolling, SERIES_CUT, SERIES_TERMS } from './cushion-series.ts';
+import {
+  cushionSeries, cushionSeriesAt, cushionSeriesRolling, SERIES_CUT, SERIES_TERMS,
+} from './cushion-series.ts';
 
 /**
  * The series step's error tolerance, as a multiple of the solver's. With 1 the largest errors
@@ -59,30 +61,6 @@ function at(q: Float64Array, i: number, t: number): number {
   let v = q[o + ORDER]!;
   for (let k = ORDER - 1; k >= 0; k--) v = v * t + q[o + k]!;
   return v;
-}
-
-/** All six variables of series q at p = t into out (six Horner chains side by side). */
-function atAll(q: Float64Array, t: number, out: Float64Array): void {
-  let v0 = q[ORDER]!;
-  let v1 = q[NT + ORDER]!;
-  let v2 = q[2 * NT + ORDER]!;
-  let v3 = q[3 * NT + ORDER]!;
-  let v4 = q[4 * NT + ORDER]!;
-  let v5 = q[5 * NT + ORDER]!;
-  for (let k = ORDER - 1; k >= 0; k--) {
-    v0 = v0 * t + q[k]!;
-    v1 = v1 * t + q[NT + k]!;
-    v2 = v2 * t + q[2 * NT + k]!;
-    v3 = v3 * t + q[3 * NT + k]!;
-    v4 = v4 * t + q[4 * NT + k]!;
-    v5 = v5 * t + q[5 * NT + k]!;
-  }
-  out[0] = v0;
-  out[1] = v1;
-  out[2] = v2;
-  out[3] = v3;
-  out[4] = v4;
-  out[5] = v5;
 }
 
 /**
@@ -238,7 +216,7 @@ export function expressImpact(
     }
     let from = 0;
     const end = END;
-    atAll(q, dp, end);
+    cushionSeriesAt(q, dp, end);
     if (!restitution && end[1]! <= 0) {
       // vy is nearly linear in p: its first-order root is close.
       from = root(q, 1, 0, 0, dp, -q[NT]! / q[NT + 1]!);
@@ -297,6 +275,6 @@ function workStart(q: Float64Array, target: number): number {
  */
 function finish(q: Float64Array, t: number, e0: number): boolean {
   const o = EXPRESS_OUT;
-  atAll(q, t, o);
+  cushionSeriesAt(q, t, o);
   return o[0]! * o[0]! + o[1]! * o[1]! + 0.4 * (o[2]! * o[2]! + o[3]! * o[3]! + o[4]! * o[4]!) <= e0;
 }

@@ -559,3 +559,67 @@ export function cushionSeriesRolling(y: Float64Array, q: Float64Array, k: Float6
   q[45] = y5_0;
   return true;
 }
+
+/** The six series of q at p = t into out (Horner, the six chains side by side). */
+export function cushionSeriesAt(q: Float64Array, t: number, out: Float64Array): void {
+  let v0 = q[8]!;
+  let v1 = q[17]!;
+  let v2 = q[26]!;
+  let v3 = q[35]!;
+  let v4 = q[44]!;
+  let v5 = q[53]!;
+  v0 = v0 * t + q[7]!;
+  v1 = v1 * t + q[16]!;
+  v2 = v2 * t + q[25]!;
+  v3 = v3 * t + q[34]!;
+  v4 = v4 * t + q[43]!;
+  v5 = v5 * t + q[52]!;
+  v0 = v0 * t + q[6]!;
+  v1 = v1 * t + q[15]!;
+  v2 = v2 * t + q[24]!;
+  v3 = v3 * t + q[33]!;
+  v4 = v4 * t + q[42]!;
+  v5 = v5 * t + q[51]!;
+  v0 = v0 * t + q[5]!;
+  v1 = v1 * t + q[14]!;
+  v2 = v2 * t + q[23]!;
+  v3 = v3 * t + q[32]!;
+  v4 = v4 * t + q[41]!;
+  v5 = v5 * t + q[50]!;
+  v0 = v0 * t + q[4]!;
+  v1 = v1 * t + q[13]!;
+  v2 = v2 * t + q[22]!;
+  v3 = v3 * t + q[31]!;
+  v4 = v4 * t + q[40]!;
+  v5 = v5 * t + q[49]!;
+  v0 = v0 * t + q[3]!;
+  v1 = v1 * t + q[12]!;
+  v2 = v2 * t + q[21]!;
+  v3 = v3 * t + q[30]!;
+  v4 = v4 * t + q[39]!;
+  v5 = v5 * t + q[48]!;
+  v0 = v0 * t + q[2]!;
+  v1 = v1 * t + q[11]!;
+  v2 = v2 * t + q[20]!;
+  v3 = v3 * t + q[29]!;
+  v4 = v4 * t + q[38]!;
+  v5 = v5 * t + q[47]!;
+  v0 = v0 * t + q[1]!;
+  v1 = v1 * t + q[10]!;
+  v2 = v2 * t + q[19]!;
+  v3 = v3 * t + q[28]!;
+  v4 = v4 * t + q[37]!;
+  v5 = v5 * t + q[46]!;
+  v0 = v0 * t + q[0]!;
+  v1 = v1 * t + q[9]!;
+  v2 = v2 * t + q[18]!;
+  v3 = v3 * t + q[27]!;
+  v4 = v4 * t + q[36]!;
+  v5 = v5 * t + q[45]!;
+  out[0] = v0;
+  out[1] = v1;
+  out[2] = v2;
+  out[3] = v3;
+  out[4] = v4;
+  out[5] = v5;
+}

@@ -4,6 +4,7 @@
 // rest of the kernel (cushion-accuracy.test.ts goes through cushionRebound); here: the series is
 // the equations' own, the path is taken where it should be and declines where it should, and it
 // agrees with the solver.
+import { readFileSync } from 'node:fs';
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { cushionImpactSolver } from '../../shared/physics/cushion.ts';
@@ -12,6 +13,7 @@ import { CushionModel } from '../../shared/physics/cushion-model.ts';
 import { cushionSeries, SERIES_TERMS } from '../../shared/physics/cushion-series.ts';
 import { cushionImpact } from '../../shared/physics/index.ts';
 import type { CushionParams, CushionState } from '../../shared/physics/index.ts';
+import { CUSHION_SERIES_FILE, CUSHION_SERIES_SOURCE } from '../../scripts/gen-cushion-series.ts';
 import { benchGrid, PAPER, paperState, relError, TABLE_PARAMS } from '../support/cushion-cases.ts';
 import { issueImpact } from '../support/cushion-arbitraries.ts';
 
@@ -49,6 +51,10 @@ function asState(v: number[]): CushionState {
 }
 
 describe('cushion series', () => {
+  it('is the generator\'s output (regenerate with node --import tsx scripts/gen-cushion-series.ts)', () => {
+    expect(readFileSync(CUSHION_SERIES_FILE, 'utf8')).toBe(CUSHION_SERIES_SOURCE);
+  });
+
   it('is the Taylor series of the equations: a fine Runge-Kutta integration of the model lands on it', () => {
     const model = new CushionModel();
     for (const [, p] of TABLE_PARAMS) {
