@@ -40,7 +40,9 @@ let expressR = 1;
  * or from where the express path left; false when vy <= 0 (no impact). `express` false: the
  * solver only (traces, tests).
  */
-function solve(state: CushionState, params: CushionParams, options: CushionOptions | undefined, express: boolean): boolean {
+function solve(
+  state: CushionState, params: CushionParams, options: CushionOptions | undefined, express: boolean,
+): boolean {
   validateState(state);
   validateParams(params);
   const tol = resolveTolerance(options);
@@ -79,10 +81,15 @@ function copyOf(state: CushionState): CushionStateOut {
   return { vx: state.vx, vy: state.vy, wx: state.wx, wy: state.wy, wz: state.wz };
 }
 
-function run(state: CushionState, params: CushionParams, options: CushionOptions | undefined, express: boolean): CushionImpact {
-  if (!solve(state, params, options, express)) return { state: copyOf(state), outcome: 'no-impact', steps: 0, rejectedSteps: 0 };
+function run(
+  state: CushionState, params: CushionParams, options: CushionOptions | undefined, express: boolean,
+): CushionImpact {
+  if (!solve(state, params, options, express)) {
+    return { state: copyOf(state), outcome: 'no-impact', steps: 0, rejectedSteps: 0 };
+  }
   if (expressSteps > 0) return { state: result(), outcome: 'restitution', steps: expressSteps, rejectedSteps: 0 };
-  return { state: solver.result(), outcome: solver.outcome, steps: expressBefore + solver.steps, rejectedSteps: solver.rejected };
+  const steps = expressBefore + solver.steps;
+  return { state: solver.result(), outcome: solver.outcome, steps, rejectedSteps: solver.rejected };
 }
 
 /**
@@ -102,7 +109,9 @@ export function cushionImpact(state: CushionState, params: CushionParams, option
 }
 
 /** cushionImpact without the express path: the Runge-Kutta solver alone (for checks). */
-export function cushionImpactSolver(state: CushionState, params: CushionParams, options?: CushionOptions): CushionImpact {
+export function cushionImpactSolver(
+  state: CushionState, params: CushionParams, options?: CushionOptions,
+): CushionImpact {
   return run(state, params, options, false);
 }
 

@@ -18,3 +18,19 @@ export const issueImpact: fc.Arbitrary<{ V0: number; params: CushionParams; stat
     const params = TABLE_PARAMS[which]![1];
     return { V0, params, state: paperState(V0, alpha, kT, kS, params.R) };
   });
+
+/**
+ * Constants of real tables around the ones in shared/physics/tables.ts: ball radius 26-32 mm
+ * and mass 0.14-0.22 kg, cushion nose 1.2-1.65 R, e_e 0.7-1, ball-table friction 0.1-0.35,
+ * ball-cushion friction 0.08-0.33.
+ */
+export const physicalParams: fc.Arbitrary<CushionParams> = fc
+  .tuple(
+    fc.double({ min: 0.026, max: 0.032, noNaN: true }),
+    fc.double({ min: 0.14, max: 0.22, noNaN: true }),
+    fc.double({ min: 1.2, max: 1.65, noNaN: true }),
+    fc.double({ min: 0.7, max: 1, noNaN: true }),
+    fc.double({ min: 0.1, max: 0.35, noNaN: true }),
+    fc.double({ min: 0.08, max: 0.33, noNaN: true }),
+  )
+  .map(([R, M, hR, ee, muS, muW]) => ({ M, R, h: hR * R, ee, muS, muW }));

@@ -1,14 +1,14 @@
 // Accuracy of the kernel at its default setting: every component (spins times R) within 1e-5 V0
 // of the converged reference, on a grid and on random draws over the issue's range (V0 0.05-5
-// m/s, incidence 0.5-89.5°, topspin k -1..2, sidespin k -2..2), with the paper's constants and
-// each table's.
+// m/s, incidence 0.5-89.5°, topspin k -1..2, sidespin k -2..2), with the paper's constants,
+// each table's, and random physical ones.
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { cushionImpact, cushionRebound } from '../../shared/physics/index.ts';
 import { MAX_STEPS } from '../../shared/physics/cushion-solver.ts';
 import { referenceRebound } from '../support/cushion-reference.ts';
 import { legacyTableParams, PAPER, paperState, relError, TABLE_PARAMS } from '../support/cushion-cases.ts';
-import { issueImpact } from '../support/cushion-arbitraries.ts';
+import { issueImpact, issueRange, physicalParams } from '../support/cushion-arbitraries.ts';
 
 const LIMIT = 1e-5;
 const ANGLES = [0.5, 5, 20, 45, 70, 85, 89.5];
@@ -51,6 +51,24 @@ describe('accuracy against the converged reference (default setting)', () => {
         return relError(k, r, params.R, V0) < LIMIT;
       }),
       { numRuns: 160, seed: 20101863 },
+    );
+  });
+
+  it('random draws over the range with random physical constants: error < 1e-5 V0', () => {
+    // Beyond the four sets of constants: the express path's step choice and its thresholds
+    // must hold for any table (a near miss of the table slip at 2% of the speed once put one
+    // such impact 8.9e-6 V0 off; cushion-express.ts, EXPRESS_SLIP_MIN).
+    fc.assert(
+      fc.property(
+        physicalParams, issueRange.V0, issueRange.alpha, issueRange.kT, issueRange.kS,
+        (params, V0, alpha, kT, kS) => {
+          const s = paperState(V0, alpha, kT, kS, params.R);
+          const k = cushionRebound(s, params);
+          const r = referenceRebound(s, params).state;
+          return relError(k, r, params.R, V0) < LIMIT;
+        },
+      ),
+      { numRuns: 120, seed: 20261122 },
     );
   });
 
