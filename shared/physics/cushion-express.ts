@@ -21,6 +21,7 @@
 // never with the tables' constants), more than EXPRESS_MAX_STEPS steps, or a result with more
 // energy than the ball brought (see finish).
 import { ZERO_FRACTION } from './cushion-control.ts';
+import { ROOT_MOVE } from './cushion-dense.ts';
 import {
   cushionSeries, cushionSeriesAt, cushionSeriesRolling, SERIES_CUT, SERIES_TERMS,
 } from './cushion-series.ts';
@@ -72,12 +73,13 @@ function at(q: Float64Array, i: number, t: number): number {
 /**
  * Where variable i of series q falls to target in [lo, hi] (above it at lo, at or below it at
  * hi), from x0 inside: Newton's method (value and slope in one Horner pass) kept inside the
- * bracket by bisection, until its correction is below 1e-10 of the step (the state then moves
- * by about 1e-10 V). From the root of the series' first terms it takes two iterations or three.
+ * bracket by bisection, until its correction is below ROOT_MOVE (1e-6) of the step, as the
+ * solver's (cushion-dense.ts): it converges quadratically, so the root is then within about
+ * 1e-12 of the step. From the root of the series' first terms it takes about two iterations.
  */
 function root(q: Float64Array, i: number, target: number, lo: number, hi: number, x0: number): number {
   const o = i * NT;
-  const eps = 1e-10 * hi;
+  const eps = ROOT_MOVE * hi;
   let x = x0 > lo && x0 < hi ? x0 : 0.5 * (lo + hi);
   for (let it = 0; it < 60; it++) {
     let f = q[o + ORDER]!;
@@ -98,7 +100,7 @@ function root(q: Float64Array, i: number, target: number, lo: number, hi: number
     } else {
       x = 0.5 * (lo + hi);
     }
-    if (hi - lo <= eps) break;
+    if (hi - lo <= 1e-12 * hi) break; // (bisection alone: to rounding)
   }
   return x;
 }
