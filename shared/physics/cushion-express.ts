@@ -36,8 +36,8 @@ export const EXPRESS_TOL_FACTOR = 1;
  * A slip below this fraction of the speed sends the impact to the solver. Near a slip's close
  * approach to zero the series' last terms understate the error of a step: at 2% a random impact
  * (μs 0.34, μw 0.09, 86°) whose table slip passed zero at 2% of the speed ended 8.9e-6 V0 off
- * (the solver alone: 2e-7); at 5%, 8.6e-7, and no impact of the test sets is off more on this path
- * than with the solver alone.
+ * (the solver alone: 2e-7); at 5%, 8.6e-7, and the largest error on this path over the test sets
+ * (3.9e-6 V0 over 18,000 random draws) stays below the solver's own largest (4.5e-6).
  */
 export const EXPRESS_SLIP_MIN = 0.05;
 /** More series steps than this send the impact to the solver. */
