@@ -67,9 +67,9 @@ function emit(rolling: boolean): void {
     w(' * table\'s normal impulse is not positive.');
   } else {
     w(' * Fills q with the series of y about the state y: variable i\'s coefficient of p^k at');
-    w(` * q[${N + 1} i + k], and q[SERIES_CUT]. k holds the constants (cushion-express.ts). False,`);
-    w(' * with q unspecified, when the table\'s normal impulse is not positive at the start (its');
-    w(' * clamp at 0 would make the series wrong).');
+    w(` * q[${N + 1} i + k], and q[SERIES_CUT]. k holds the constants (seriesConstants in`);
+    w(' * cushion-express.ts). False, with q unspecified, when the table\'s normal impulse is not');
+    w(' * positive at the start (its clamp at 0 would make the series wrong).');
   }
   w(' */');
   w(`export function ${name}(y: Float64Array, q: Float64Array, k: Float64Array): boolean {`);
@@ -104,7 +104,12 @@ function emit(rolling: boolean): void {
       // rate of its speed), for the step control (cushion-express.ts); computed here, beside
       // the later orders, rather than after them.
       w(`  ${rolling ? 'const' : 'let'} cut = rI1 < 0 ? (rI0 - lim) / -rI1 : Infinity;`);
-      if (!rolling) w('  if (rC1 < 0 && (rC0 - lim) / -rC1 < cut) cut = (rC0 - lim) / -rC1;');
+      if (!rolling) {
+        w('  if (rC1 < 0) {');
+        w('    const cutC = (rC0 - lim) / -rC1;');
+        w('    if (cutC < cut) cut = cutC;');
+        w('  }');
+      }
       w(`  q[${6 * (N + 1)}] = cut;`);
     }
     // -μs A = kMu u_I,y - μs sinθ, and h = -μs A u_C (a product of series).

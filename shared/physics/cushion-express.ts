@@ -47,7 +47,9 @@ const NT = SERIES_TERMS;
 const ORDER = NT - 1;
 // The series (6 variables × NT coefficients), its constants and the state at a step's start.
 const Q = new Float64Array(SERIES_CUT + 1);
-const K = new Float64Array(13);
+/** The series' constants (seriesConstants). */
+export const SERIES_CONSTANTS = 13;
+const K = new Float64Array(SERIES_CONSTANTS);
 const Y = new Float64Array(6);
 /** The state at the start of the step the express path left on (see EXPRESS_HANDOVER). */
 export const EXPRESS_FROM: Float64Array = Y;
@@ -68,6 +70,28 @@ function at(q: Float64Array, i: number, t: number): number {
   let v = q[o + ORDER]!;
   for (let k = ORDER - 1; k >= 0; k--) v = v * t + q[o + k]!;
   return v;
+}
+
+/**
+ * The constants the series functions read (cushion-series.ts), for sinθ = s, cosθ = c, the
+ * frictions and the slip speed lim at which a shrinking slip's cut is aimed (SERIES_CUT):
+ * sinθ, cosθ, -μw, -μs μw cosθ, μs sinθ (the table's normal times -μs is k3 u_I,y - k4), then
+ * the weights of u_I and h in the slips' rates (cushion-model.ts) and sinθ cosθ.
+ */
+export function seriesConstants(k: Float64Array, s: number, c: number, muS: number, muW: number, lim: number): void {
+  k[0] = s;
+  k[1] = c;
+  k[2] = -muW;
+  k[3] = -(muS * c * muW);
+  k[4] = muS * s;
+  k[5] = -3.5 * muW;
+  k[6] = 1 - 2.5 * s;
+  k[7] = -(s * s + 2.5) * muW;
+  k[8] = 2.5 - s;
+  k[9] = -(1 - 2.5 * s) * muW;
+  k[10] = -(2.5 - s) * muW;
+  k[11] = s * c;
+  k[12] = lim;
 }
 
 /**
@@ -148,19 +172,7 @@ export function expressImpact(
     if (cx * cx + cy * cy <= zero * zero) rolling = true;
     else if (!(cx * cx + cy * cy >= min2)) return 0;
   }
-  K[0] = s;
-  K[1] = c;
-  K[2] = -muW;
-  K[3] = -(muS * c * muW);
-  K[4] = muS * s;
-  K[5] = -3.5 * muW;
-  K[6] = 1 - 2.5 * s;
-  K[7] = -(s * s + 2.5) * muW;
-  K[8] = 2.5 - s;
-  K[9] = -(1 - 2.5 * s) * muW;
-  K[10] = -(2.5 - s) * muW;
-  K[11] = s * c;
-  K[12] = lim;
+  seriesConstants(K, s, c, muS, muW, lim);
   Y[0] = vx;
   Y[1] = vy;
   Y[2] = ox;

@@ -14,9 +14,9 @@ export const SERIES_CUT = 54;
 
 /**
  * Fills q with the series of y about the state y: variable i's coefficient of p^k at
- * q[9 i + k], and q[SERIES_CUT]. k holds the constants (cushion-express.ts). False,
- * with q unspecified, when the table's normal impulse is not positive at the start (its
- * clamp at 0 would make the series wrong).
+ * q[9 i + k], and q[SERIES_CUT]. k holds the constants (seriesConstants in
+ * cushion-express.ts). False, with q unspecified, when the table's normal impulse is not
+ * positive at the start (its clamp at 0 would make the series wrong).
  */
 export function cushionSeries(y: Float64Array, q: Float64Array, k: Float64Array): boolean {
   const s = k[0]!;
@@ -79,7 +79,10 @@ export function cushionSeries(y: Float64Array, q: Float64Array, k: Float64Array)
   const uCx1 = (eCx1 - rC1 * uCx0) * iC;
   const uCy1 = (eCy1 - rC1 * uCy0) * iC;
   let cut = rI1 < 0 ? (rI0 - lim) / -rI1 : Infinity;
-  if (rC1 < 0 && (rC0 - lim) / -rC1 < cut) cut = (rC0 - lim) / -rC1;
+  if (rC1 < 0) {
+    const cutC = (rC0 - lim) / -rC1;
+    if (cutC < cut) cut = cutC;
+  }
   q[54] = cut;
   const nm1 = kMu * uIy1;
   const hx1 = nm0 * uCx1 + nm1 * uCx0;

@@ -8,7 +8,9 @@ import { readFileSync } from 'node:fs';
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { cushionImpactSolver } from '../../shared/physics/cushion.ts';
-import { EXPRESS_HANDOVER, EXPRESS_OUT, EXPRESS_SLIP_MIN, expressImpact } from '../../shared/physics/cushion-express.ts';
+import {
+  EXPRESS_HANDOVER, EXPRESS_OUT, EXPRESS_SLIP_MIN, expressImpact, SERIES_CONSTANTS, seriesConstants,
+} from '../../shared/physics/cushion-express.ts';
 import { CushionModel } from '../../shared/physics/cushion-model.ts';
 import { cushionSeries, SERIES_TERMS } from '../../shared/physics/cushion-series.ts';
 import { cushionImpact } from '../../shared/physics/index.ts';
@@ -19,15 +21,12 @@ import { issueImpact } from '../support/cushion-arbitraries.ts';
 
 const NT = SERIES_TERMS;
 
-/** The series' constants, as expressImpact sets them. */
+/** The series' constants, as expressImpact sets them (no cut: lim 0). */
 function constants(p: CushionParams): { s: number; c: number; k: Float64Array } {
   const s = (p.h - p.R) / p.R;
   const c = Math.sqrt((1 - s) * (1 + s));
-  const { muS, muW } = p;
-  const k = new Float64Array([
-    s, c, -muW, -(muS * c * muW), muS * s, -3.5 * muW, 1 - 2.5 * s, -(s * s + 2.5) * muW, 2.5 - s,
-    -(1 - 2.5 * s) * muW, -(2.5 - s) * muW, s * c,
-  ]);
+  const k = new Float64Array(SERIES_CONSTANTS);
+  seriesConstants(k, s, c, p.muS, p.muW, 0);
   return { s, c, k };
 }
 
