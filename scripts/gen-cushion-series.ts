@@ -255,14 +255,41 @@ emit(false);
 w('');
 emit(true);
 w('');
-// Their evaluation, unrolled as well (a loop here cost 5-10% of an impact).
-w('/** The six series of q at p = t into out (Horner, the six chains side by side). */');
-w('export function cushionSeriesAt(q: Float64Array, t: number, out: Float64Array): void {');
-for (let i = 0; i < 6; i++) w(`  let v${i} = q[${i * (N + 1) + N}]!;`);
-for (let k = N - 1; k >= 0; k--) {
-  for (let i = 0; i < 6; i++) w(`  v${i} = v${i} * t + q[${i * (N + 1) + k}]!;`);
+// Their evaluation, unrolled as well (a loop here cost 5-10% of an impact), by Estrin's scheme:
+// pairs a_k + a_{k+1} t, then pairs of those with t², and so on, so that a value waits on four
+// products and sums instead of Horner's eight (the evaluation at a step's end sits between one
+// step's series and the next, on the impact's critical path).
+/** The terms of a polynomial's coefficients q[o + lo ..], lo to hi, by Estrin's scheme. */
+function estrin(coef: (k: number) => string, lo: number, hi: number): string {
+  // t^(2^m) is p(2^m): p1 = t, p2 = t², p4, p8; each part is a bracketed sum or one coefficient.
+  if (lo === hi) return coef(lo);
+  let span = 1;
+  while (2 * span <= hi - lo) span *= 2;
+  const low = estrin(coef, lo, lo + span - 1);
+  const high = estrin(coef, lo + span, hi);
+  return `(${low} + ${high} * p${span})`;
 }
-for (let i = 0; i < 6; i++) w(`  out[${i}] = v${i};`);
+w('/** The six series of q at p = t into out (Estrin\'s scheme, the six side by side). */');
+w('export function cushionSeriesAt(q: Float64Array, t: number, out: Float64Array): void {');
+w('  const p1 = t;');
+w('  const p2 = t * t;');
+w('  const p4 = p2 * p2;');
+w('  const p8 = p4 * p4;');
+for (let i = 0; i < 6; i++) w(`  out[${i}] = ${estrin((k) => `q[${i * (N + 1) + k}]!`, 0, N)};`);
+w('}');
+w('');
+// The events' evaluation: vy with its slope and the work (the work's slope is c vy and its
+// curvature c dvy/dp, so this gives the roots of both events their Newton and Halley
+// corrections in one pass).
+w('/** vy, dvy/dp and the work W of q at p = t into out[0], out[1], out[2] (Estrin\'s scheme). */');
+w('export function cushionSeriesEvent(q: Float64Array, t: number, out: Float64Array): void {');
+w('  const p1 = t;');
+w('  const p2 = t * t;');
+w('  const p4 = p2 * p2;');
+w('  const p8 = p4 * p4;');
+w(`  out[0] = ${estrin((k) => `q[${N + 1 + k}]!`, 0, N)};`);
+w(`  out[1] = ${estrin((k) => (k + 1 === 1 ? `q[${N + 1 + k + 1}]!` : `${k + 1} * q[${N + 1 + k + 1}]!`), 0, N - 1)};`);
+w(`  out[2] = ${estrin((k) => `q[${5 * (N + 1) + k}]!`, 0, N)};`);
 w('}');
 
 /** The generated file's text (tests/unit/cushion-express.test.ts checks it is the one committed). */

@@ -563,66 +563,27 @@ export function cushionSeriesRolling(y: Float64Array, q: Float64Array, k: Float6
   return true;
 }
 
-/** The six series of q at p = t into out (Horner, the six chains side by side). */
+/** The six series of q at p = t into out (Estrin's scheme, the six side by side). */
 export function cushionSeriesAt(q: Float64Array, t: number, out: Float64Array): void {
-  let v0 = q[8]!;
-  let v1 = q[17]!;
-  let v2 = q[26]!;
-  let v3 = q[35]!;
-  let v4 = q[44]!;
-  let v5 = q[53]!;
-  v0 = v0 * t + q[7]!;
-  v1 = v1 * t + q[16]!;
-  v2 = v2 * t + q[25]!;
-  v3 = v3 * t + q[34]!;
-  v4 = v4 * t + q[43]!;
-  v5 = v5 * t + q[52]!;
-  v0 = v0 * t + q[6]!;
-  v1 = v1 * t + q[15]!;
-  v2 = v2 * t + q[24]!;
-  v3 = v3 * t + q[33]!;
-  v4 = v4 * t + q[42]!;
-  v5 = v5 * t + q[51]!;
-  v0 = v0 * t + q[5]!;
-  v1 = v1 * t + q[14]!;
-  v2 = v2 * t + q[23]!;
-  v3 = v3 * t + q[32]!;
-  v4 = v4 * t + q[41]!;
-  v5 = v5 * t + q[50]!;
-  v0 = v0 * t + q[4]!;
-  v1 = v1 * t + q[13]!;
-  v2 = v2 * t + q[22]!;
-  v3 = v3 * t + q[31]!;
-  v4 = v4 * t + q[40]!;
-  v5 = v5 * t + q[49]!;
-  v0 = v0 * t + q[3]!;
-  v1 = v1 * t + q[12]!;
-  v2 = v2 * t + q[21]!;
-  v3 = v3 * t + q[30]!;
-  v4 = v4 * t + q[39]!;
-  v5 = v5 * t + q[48]!;
-  v0 = v0 * t + q[2]!;
-  v1 = v1 * t + q[11]!;
-  v2 = v2 * t + q[20]!;
-  v3 = v3 * t + q[29]!;
-  v4 = v4 * t + q[38]!;
-  v5 = v5 * t + q[47]!;
-  v0 = v0 * t + q[1]!;
-  v1 = v1 * t + q[10]!;
-  v2 = v2 * t + q[19]!;
-  v3 = v3 * t + q[28]!;
-  v4 = v4 * t + q[37]!;
-  v5 = v5 * t + q[46]!;
-  v0 = v0 * t + q[0]!;
-  v1 = v1 * t + q[9]!;
-  v2 = v2 * t + q[18]!;
-  v3 = v3 * t + q[27]!;
-  v4 = v4 * t + q[36]!;
-  v5 = v5 * t + q[45]!;
-  out[0] = v0;
-  out[1] = v1;
-  out[2] = v2;
-  out[3] = v3;
-  out[4] = v4;
-  out[5] = v5;
+  const p1 = t;
+  const p2 = t * t;
+  const p4 = p2 * p2;
+  const p8 = p4 * p4;
+  out[0] = ((((q[0]! + q[1]! * p1) + (q[2]! + q[3]! * p1) * p2) + ((q[4]! + q[5]! * p1) + (q[6]! + q[7]! * p1) * p2) * p4) + q[8]! * p8);
+  out[1] = ((((q[9]! + q[10]! * p1) + (q[11]! + q[12]! * p1) * p2) + ((q[13]! + q[14]! * p1) + (q[15]! + q[16]! * p1) * p2) * p4) + q[17]! * p8);
+  out[2] = ((((q[18]! + q[19]! * p1) + (q[20]! + q[21]! * p1) * p2) + ((q[22]! + q[23]! * p1) + (q[24]! + q[25]! * p1) * p2) * p4) + q[26]! * p8);
+  out[3] = ((((q[27]! + q[28]! * p1) + (q[29]! + q[30]! * p1) * p2) + ((q[31]! + q[32]! * p1) + (q[33]! + q[34]! * p1) * p2) * p4) + q[35]! * p8);
+  out[4] = ((((q[36]! + q[37]! * p1) + (q[38]! + q[39]! * p1) * p2) + ((q[40]! + q[41]! * p1) + (q[42]! + q[43]! * p1) * p2) * p4) + q[44]! * p8);
+  out[5] = ((((q[45]! + q[46]! * p1) + (q[47]! + q[48]! * p1) * p2) + ((q[49]! + q[50]! * p1) + (q[51]! + q[52]! * p1) * p2) * p4) + q[53]! * p8);
+}
+
+/** vy, dvy/dp and the work W of q at p = t into out[0], out[1], out[2] (Estrin's scheme). */
+export function cushionSeriesEvent(q: Float64Array, t: number, out: Float64Array): void {
+  const p1 = t;
+  const p2 = t * t;
+  const p4 = p2 * p2;
+  const p8 = p4 * p4;
+  out[0] = ((((q[9]! + q[10]! * p1) + (q[11]! + q[12]! * p1) * p2) + ((q[13]! + q[14]! * p1) + (q[15]! + q[16]! * p1) * p2) * p4) + q[17]! * p8);
+  out[1] = (((q[10]! + 2 * q[11]! * p1) + (3 * q[12]! + 4 * q[13]! * p1) * p2) + ((5 * q[14]! + 6 * q[15]! * p1) + (7 * q[16]! + 8 * q[17]! * p1) * p2) * p4);
+  out[2] = ((((q[45]! + q[46]! * p1) + (q[47]! + q[48]! * p1) * p2) + ((q[49]! + q[50]! * p1) + (q[51]! + q[52]! * p1) * p2) * p4) + q[53]! * p8);
 }
