@@ -50,6 +50,14 @@ w(' * slip reaches k[12] at its present rate (Infinity when none shrinks; the ta
 w(' * while it grows from zero).');
 w(' */');
 w(`export const SERIES_CUT = ${6 * (N + 1)};`);
+w('/**');
+w(` * Where they leave the work's coefficient of p^${N + 1}, c vy_${N} / ${N + 1}: with it the work's series is the`);
+w(' * integral of c times the whole series of vy, so that the events\' roots, which take the');
+w(' * work\'s slope and curvature from vy (cushionSeriesEvent), see one consistent polynomial.');
+w(' */');
+w(`export const SERIES_W_LAST = ${6 * (N + 1) + 1};`);
+w('/** The length of a series array. */');
+w(`export const SERIES_LENGTH = ${6 * (N + 1) + 2};`);
 w('');
 /**
  * Emits one series function. rolling: the table slip is zero at the start and grows (a ball
@@ -151,6 +159,7 @@ function emit(rolling: boolean): void {
     w(`  q[${o(4)}] = -2.5 * c * gx${k}${inv};`);
     w(`  q[${o(5)}] = c * y1_${k}${inv};`);
   }
+  w(`  q[${6 * (N + 1) + 1}] = c * y1_${N} * ${1 / (N + 1)};`);
   for (let i = 0; i < 6; i++) w(`  q[${i * (N + 1)}] = y${i}_0;`);
   w('  return true;');
   w('}');
@@ -269,19 +278,20 @@ function estrin(coef: (k: number) => string, lo: number, hi: number): string {
   const high = estrin(coef, lo + span, hi);
   return `(${low} + ${high} * p${span})`;
 }
-w('/** The six series of q at p = t into out (Estrin\'s scheme, the six side by side). */');
+w('/** The six series of q at p = t into out (Estrin\'s scheme, the six side by side; the work to p^9). */');
 w('export function cushionSeriesAt(q: Float64Array, t: number, out: Float64Array): void {');
 w('  const p1 = t;');
 w('  const p2 = t * t;');
 w('  const p4 = p2 * p2;');
 w('  const p8 = p4 * p4;');
-for (let i = 0; i < 6; i++) w(`  out[${i}] = ${estrin((k) => `q[${i * (N + 1) + k}]!`, 0, N)};`);
+for (let i = 0; i < 5; i++) w(`  out[${i}] = ${estrin((k) => `q[${i * (N + 1) + k}]!`, 0, N)};`);
+w(`  out[5] = ${estrin((k) => `q[${5 * (N + 1) + k}]!`, 0, N)} + q[${6 * (N + 1) + 1}]! * (p8 * t);`);
 w('}');
 w('');
 // The events' evaluation: vy with its slope and the work (the work's slope is c vy and its
 // curvature c dvy/dp, so this gives the roots of both events their Newton and Halley
 // corrections in one pass).
-w('/** vy, dvy/dp and the work W of q at p = t into out[0], out[1], out[2] (Estrin\'s scheme). */');
+w('/** vy, dvy/dp and the work W (to p^9) of q at p = t into out[0], out[1], out[2] (Estrin\'s scheme). */');
 w('export function cushionSeriesEvent(q: Float64Array, t: number, out: Float64Array): void {');
 w('  const p1 = t;');
 w('  const p2 = t * t;');
@@ -289,7 +299,7 @@ w('  const p4 = p2 * p2;');
 w('  const p8 = p4 * p4;');
 w(`  out[0] = ${estrin((k) => `q[${N + 1 + k}]!`, 0, N)};`);
 w(`  out[1] = ${estrin((k) => (k + 1 === 1 ? `q[${N + 1 + k + 1}]!` : `${k + 1} * q[${N + 1 + k + 1}]!`), 0, N - 1)};`);
-w(`  out[2] = ${estrin((k) => `q[${5 * (N + 1) + k}]!`, 0, N)};`);
+w(`  out[2] = ${estrin((k) => `q[${5 * (N + 1) + k}]!`, 0, N)} + q[${6 * (N + 1) + 1}]! * (p8 * t);`);
 w('}');
 
 /** The generated file's text (tests/unit/cushion-express.test.ts checks it is the one committed). */

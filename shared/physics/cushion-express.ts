@@ -23,7 +23,7 @@
 import { ZERO_FRACTION } from './cushion-control.ts';
 import { ROOT_MOVE } from './cushion-dense.ts';
 import {
-  cushionSeries, cushionSeriesAt, cushionSeriesEvent, cushionSeriesRolling, SERIES_CUT, SERIES_TERMS,
+  cushionSeries, cushionSeriesAt, cushionSeriesEvent, cushionSeriesRolling, SERIES_CUT, SERIES_LENGTH, SERIES_TERMS,
 } from './cushion-series.ts';
 
 /**
@@ -45,8 +45,9 @@ export const EXPRESS_MAX_STEPS = 16;
 
 const NT = SERIES_TERMS;
 const ORDER = NT - 1;
-// The series (6 variables × NT coefficients), its constants and the state at a step's start.
-const Q = new Float64Array(SERIES_CUT + 1);
+// The series (6 variables × NT coefficients, the cut and the work's last term), its constants
+// and the state at a step's start.
+const Q = new Float64Array(SERIES_LENGTH);
 /** The series' constants (seriesConstants). */
 export const SERIES_CONSTANTS = 13;
 const K = new Float64Array(SERIES_CONSTANTS);
@@ -89,25 +90,28 @@ export function seriesConstants(k: Float64Array, s: number, c: number, muS: numb
 /**
  * A root is taken as found when its last correction dx is within this fraction of the step.
  * The end of compression matters only through the work there, W_c, at its maximum
- * (dW/dp = c vy): from x, W(x) - c vy dx / 2 is W_c to within c |d²vy/dp²| |dx|³ / 6, about
- * 1e-9 of it. The end of restitution is Halley's (cubic convergence: within about 1e-9 of the
- * step, which moves the state by as much of V). With e_e = 0 the ball leaves at the end of
- * compression itself, which Newton's method then locates to ROOT_MOVE (1e-6) of the step, as
- * the solver does (within about 1e-12). The roots took 2.1 and 2.0 Newton iterations each on
- * the benchmark grid, the work at the first one another evaluation; now 1.07 and 1.19.
+ * (dW/dp = c vy, exactly so on the series with the work's last term, SERIES_W_LAST): from x,
+ * W(x) - c vy dx / 2 is W_c to within c |d²vy/dp²| |dx|³ / 6 (tested: within 3e-11 of it,
+ * Newton's root itself within about 1e-6 of the step). The end of restitution is Halley's
+ * (cubic convergence: to rounding, tested). With e_e = 0 the ball leaves at the end of
+ * compression itself, which Newton's method then locates to ROOT_MOVE (1e-6) of the step, as the
+ * solver does (to about 1e-13). On the benchmark grid the roots took 2.1 and 2.0 Newton
+ * iterations each, and the work at the first one another evaluation; now 1.07 and 1.19.
  */
 export const EVENT_DONE = 1e-3;
-// vy, dvy/dp and W at the point of the last evaluation (cushionSeriesEvent).
-const EV = new Float64Array(3);
+/** vy, dvy/dp and W at the point of the last event evaluation (cushionSeriesEvent). */
+export const EXPRESS_EVENT = new Float64Array(3);
+const EV = EXPRESS_EVENT;
 
 /**
  * The end of compression in a step of length dp whose series q takes vy from above 0 to 0 or
- * below: the impulse of vy = 0, with the work there in EV[2]. From the root of vy's quadratic
- * part, Newton's method kept inside the bracket (bisection otherwise) until its correction dx is
- * below done × dp; the work at the root is then W(x) - c vy(x) dx / 2 (dW/dp = c vy: the
- * second-order Taylor step to the root, its error of order dx³), found in the same pass.
+ * below: the impulse of vy = 0, with the work there in EXPRESS_EVENT[2]. From the root of vy's
+ * quadratic part, Newton's method kept inside the bracket (bisection otherwise) until its
+ * correction dx is below done × dp; the work at the root is then W(x) - c vy(x) dx / 2
+ * (dW/dp = c vy: the second-order Taylor step to the root, its error of order dx³), from the
+ * same pass.
  */
-function compressionEnd(q: Float64Array, dp: number, c: number, done: number): number {
+export function compressionEnd(q: Float64Array, dp: number, c: number, done: number): number {
   const a0 = q[NT]!;
   const a1 = q[NT + 1]!;
   const a2 = q[NT + 2]!;
@@ -148,7 +152,7 @@ function compressionEnd(q: Float64Array, dp: number, c: number, done: number): n
  * (the root of the work's quadratic part, workStart) or the bracket's middle, until its
  * correction is below EVENT_DONE of the step dp.
  */
-function restitutionEnd(q: Float64Array, target: number, lo: number, hi: number, x0: number, dp: number, c: number): number {
+export function restitutionEnd(q: Float64Array, target: number, lo: number, hi: number, x0: number, dp: number, c: number): number {
   const eps = EVENT_DONE * dp;
   const ev = EV;
   let x = x0 > lo && x0 < hi ? x0 : 0.5 * (lo + hi);

@@ -11,6 +11,14 @@ export const SERIES_TERMS = 9;
  * while it grows from zero).
  */
 export const SERIES_CUT = 54;
+/**
+ * Where they leave the work's coefficient of p^9, c vy_8 / 9: with it the work's series is the
+ * integral of c times the whole series of vy, so that the events' roots, which take the
+ * work's slope and curvature from vy (cushionSeriesEvent), see one consistent polynomial.
+ */
+export const SERIES_W_LAST = 55;
+/** The length of a series array. */
+export const SERIES_LENGTH = 56;
 
 /**
  * Fills q with the series of y about the state y: variable i's coefficient of p^k at
@@ -246,6 +254,7 @@ export function cushionSeries(y: Float64Array, q: Float64Array, k: Float64Array)
   q[35] = 2.5 * (s * gx7 - hx7) * 0.125;
   q[44] = -2.5 * c * gx7 * 0.125;
   q[53] = c * y1_7 * 0.125;
+  q[55] = c * y1_8 * 0.1111111111111111;
   q[0] = y0_0;
   q[9] = y1_0;
   q[18] = y2_0;
@@ -554,6 +563,7 @@ export function cushionSeriesRolling(y: Float64Array, q: Float64Array, k: Float6
   q[35] = 2.5 * (s * gx7 - hx7) * 0.125;
   q[44] = -2.5 * c * gx7 * 0.125;
   q[53] = c * y1_7 * 0.125;
+  q[55] = c * y1_8 * 0.1111111111111111;
   q[0] = y0_0;
   q[9] = y1_0;
   q[18] = y2_0;
@@ -563,7 +573,7 @@ export function cushionSeriesRolling(y: Float64Array, q: Float64Array, k: Float6
   return true;
 }
 
-/** The six series of q at p = t into out (Estrin's scheme, the six side by side). */
+/** The six series of q at p = t into out (Estrin's scheme, the six side by side; the work to p^9). */
 export function cushionSeriesAt(q: Float64Array, t: number, out: Float64Array): void {
   const p1 = t;
   const p2 = t * t;
@@ -574,10 +584,10 @@ export function cushionSeriesAt(q: Float64Array, t: number, out: Float64Array): 
   out[2] = ((((q[18]! + q[19]! * p1) + (q[20]! + q[21]! * p1) * p2) + ((q[22]! + q[23]! * p1) + (q[24]! + q[25]! * p1) * p2) * p4) + q[26]! * p8);
   out[3] = ((((q[27]! + q[28]! * p1) + (q[29]! + q[30]! * p1) * p2) + ((q[31]! + q[32]! * p1) + (q[33]! + q[34]! * p1) * p2) * p4) + q[35]! * p8);
   out[4] = ((((q[36]! + q[37]! * p1) + (q[38]! + q[39]! * p1) * p2) + ((q[40]! + q[41]! * p1) + (q[42]! + q[43]! * p1) * p2) * p4) + q[44]! * p8);
-  out[5] = ((((q[45]! + q[46]! * p1) + (q[47]! + q[48]! * p1) * p2) + ((q[49]! + q[50]! * p1) + (q[51]! + q[52]! * p1) * p2) * p4) + q[53]! * p8);
+  out[5] = ((((q[45]! + q[46]! * p1) + (q[47]! + q[48]! * p1) * p2) + ((q[49]! + q[50]! * p1) + (q[51]! + q[52]! * p1) * p2) * p4) + q[53]! * p8) + q[55]! * (p8 * t);
 }
 
-/** vy, dvy/dp and the work W of q at p = t into out[0], out[1], out[2] (Estrin's scheme). */
+/** vy, dvy/dp and the work W (to p^9) of q at p = t into out[0], out[1], out[2] (Estrin's scheme). */
 export function cushionSeriesEvent(q: Float64Array, t: number, out: Float64Array): void {
   const p1 = t;
   const p2 = t * t;
@@ -585,5 +595,5 @@ export function cushionSeriesEvent(q: Float64Array, t: number, out: Float64Array
   const p8 = p4 * p4;
   out[0] = ((((q[9]! + q[10]! * p1) + (q[11]! + q[12]! * p1) * p2) + ((q[13]! + q[14]! * p1) + (q[15]! + q[16]! * p1) * p2) * p4) + q[17]! * p8);
   out[1] = (((q[10]! + 2 * q[11]! * p1) + (3 * q[12]! + 4 * q[13]! * p1) * p2) + ((5 * q[14]! + 6 * q[15]! * p1) + (7 * q[16]! + 8 * q[17]! * p1) * p2) * p4);
-  out[2] = ((((q[45]! + q[46]! * p1) + (q[47]! + q[48]! * p1) * p2) + ((q[49]! + q[50]! * p1) + (q[51]! + q[52]! * p1) * p2) * p4) + q[53]! * p8);
+  out[2] = ((((q[45]! + q[46]! * p1) + (q[47]! + q[48]! * p1) * p2) + ((q[49]! + q[50]! * p1) + (q[51]! + q[52]! * p1) * p2) * p4) + q[53]! * p8) + q[55]! * (p8 * t);
 }

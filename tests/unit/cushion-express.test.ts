@@ -9,10 +9,11 @@ import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { cushionImpactSolver } from '../../shared/physics/cushion.ts';
 import {
-  EXPRESS_HANDOVER, EXPRESS_OUT, EXPRESS_SLIP_MIN, expressImpact, SERIES_CONSTANTS, seriesConstants,
+  compressionEnd, EVENT_DONE, EXPRESS_EVENT, EXPRESS_HANDOVER, EXPRESS_OUT, EXPRESS_SLIP_MIN, expressImpact,
+  restitutionEnd, SERIES_CONSTANTS, seriesConstants,
 } from '../../shared/physics/cushion-express.ts';
 import { CushionModel } from '../../shared/physics/cushion-model.ts';
-import { cushionSeries, SERIES_TERMS } from '../../shared/physics/cushion-series.ts';
+import { cushionSeries, cushionSeriesAt, SERIES_LENGTH, SERIES_TERMS } from '../../shared/physics/cushion-series.ts';
 import { cushionImpact } from '../../shared/physics/index.ts';
 import type { CushionParams, CushionState } from '../../shared/physics/index.ts';
 import { CUSHION_SERIES_FILE, CUSHION_SERIES_SOURCE } from '../../scripts/gen-cushion-series.ts';
@@ -62,7 +63,7 @@ describe('cushion series', () => {
       for (const [alpha, kT, kS] of [[30, 0, 1], [60, 2, -1], [10, -1, 2], [80, 0.5, 0]] as const) {
         const st = paperState(1, alpha, kT, kS, p.R);
         const y0 = internal(st, p.R);
-        const q = new Float64Array(6 * NT);
+        const q = new Float64Array(SERIES_LENGTH);
         expect(cushionSeries(y0, q, k)).toBe(true);
         // Classic RK4 with the model's derivative over a short impulse, to rounding.
         const span = 0.05 * st.vy / c;
@@ -94,6 +95,76 @@ describe('cushion series', () => {
         for (let j = 0; j < 6; j++) expect(Math.abs(q[j * NT + 1]! - k1[j]!)).toBeLessThan(1e-14);
       }
     }
+  });
+});
+
+/** Where variable i of q, above target at lo and at or below it at hi, falls to it: bisection to rounding. */
+function bisect(q: Float64Array, i: number, target: number, lo: number, hi: number): number {
+  const y = new Float64Array(6);
+  for (let n = 0; n < 200 && hi - lo > 0; n++) {
+    const m = 0.5 * (lo + hi);
+    if (m === lo || m === hi) break;
+    cushionSeriesAt(q, m, y);
+    if (y[i]! > target) lo = m;
+    else hi = m;
+  }
+  return 0.5 * (lo + hi);
+}
+
+describe('express path: the ends of the phases on the series', () => {
+  it('finds the end of compression, the work there and the end of restitution as bisection to rounding does', () => {
+    // On the first step's series of grid impacts (natural roll, k_T = 1, has a zero table slip:
+    // cushionSeriesRolling's case), over a step 1.3 times as long as vy's first-order root,
+    // and for restitution from there to 1.5 times as far, to half the way down.
+    let compressions = 0;
+    let restitutions = 0;
+    let rootC = 0; // Newton's method to EVENT_DONE: the root, relative to the step
+    let workC = 0; // the work there, relative
+    let rootC0 = 0; // Newton's method to 1e-6 (e_e = 0), relative to the step
+    let rootR = 0; // Halley's method to EVENT_DONE, relative to the span
+    for (const [, p] of TABLE_PARAMS) {
+      const { c, k } = constants(p);
+      for (const g of benchGrid(p.R).filter((c, i) => i % 5 === 0 && c.kT !== 1)) {
+        const q = new Float64Array(SERIES_LENGTH);
+        const y = new Float64Array(6);
+        if (!cushionSeries(internal(g.state, p.R), q, k)) continue;
+        const dp = 1.3 * (-q[NT]! / q[NT + 1]!);
+        cushionSeriesAt(q, dp, y);
+        if (!(dp > 0) || !(y[1]! <= 0)) continue;
+        compressions++;
+        const pc = bisect(q, 1, 0, 0, dp);
+        cushionSeriesAt(q, pc, y);
+        const wc = y[5]!;
+        rootC = Math.max(rootC, Math.abs(compressionEnd(q, dp, c, EVENT_DONE) - pc) / dp);
+        workC = Math.max(workC, Math.abs(EXPRESS_EVENT[2]! - wc) / wc);
+        rootC0 = Math.max(rootC0, Math.abs(compressionEnd(q, dp, c, 1e-6) - pc) / dp);
+        const end = 1.5 * pc;
+        let falls = true;
+        let last = wc;
+        for (let j = 1; j <= 50; j++) {
+          cushionSeriesAt(q, pc + ((end - pc) * j) / 50, y);
+          falls &&= y[5]! < last;
+          last = y[5]!;
+        }
+        if (!falls) continue;
+        restitutions++;
+        const target = 0.5 * (wc + last);
+        const pe = bisect(q, 5, target, pc, end);
+        rootR = Math.max(rootR, Math.abs(restitutionEnd(q, target, pc, end, -1, end, c) - pe) / end);
+      }
+    }
+    expect(compressions).toBeGreaterThan(200);
+    expect(restitutions).toBeGreaterThan(200);
+    // Newton's correction below 1e-3 of the step leaves the root within about 1e-6 of it
+    // (quadratic convergence), and the work, at its maximum there, within about 1e-10 of it
+    // (measured: 3e-11): a relative 1e-9 would move the end of restitution by about 1e-9 of the
+    // impact.
+    expect(rootC).toBeLessThan(1e-5);
+    expect(workC).toBeLessThan(1e-9);
+    // Newton's method to 1e-6 of the step and Halley's to 1e-3 of it: to rounding (measured:
+    // 6e-14 and 7e-16).
+    expect(rootC0).toBeLessThan(1e-12);
+    expect(rootR).toBeLessThan(1e-12);
   });
 });
 
