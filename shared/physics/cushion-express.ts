@@ -249,13 +249,15 @@ export function expressImpact(
   let wEnd = 0;
   let p = 0;
   const q = Q;
-  const y = Y;
+  // The state at a step's start and at its end, trading places after each step (no copy).
+  let y = Y;
+  let end = END;
   for (let step = 1; step <= EXPRESS_MAX_STEPS; step++) {
     // If this step leaves the branch, the solver continues from its start (handOver).
     const rest0 = restitution;
     const wEnd0 = wEnd;
     const done = 1 - step; // 0 or minus the steps taken
-    if (!(rolling ? cushionSeriesRolling(y, q, K) : cushionSeries(y, q, K))) return handOver(rest0, wEnd0, p, done);
+    if (!(rolling ? cushionSeriesRolling(y, q, K) : cushionSeries(y, q, K))) return handOver(y, rest0, wEnd0, p, done);
     // The step from the series' two last terms (after Jorba and Zou 2005): the largest h with
     // |a_k L^k| (h / L)^8 within the tolerance for k = 7 and 8, each variable against its weight.
     let n7 = Math.abs(q[5 * NT + ORDER - 1]!) * iw;
@@ -279,40 +281,45 @@ export function expressImpact(
     // continues from here.
     const cut = q[SERIES_CUT]!;
     if (cut < dp) {
-      if (cut < 0.25 * dp) return handOver(rest0, wEnd0, p, done);
+      if (cut < 0.25 * dp) return handOver(y, rest0, wEnd0, p, done);
       dp = cut;
     }
     let from = 0;
-    const end = END;
     cushionSeriesAt(q, dp, end);
     if (!restitution && end[1]! <= 0) {
       from = compressionEnd(q, dp, c, ee2 === 0 ? ROOT_MOVE : EVENT_DONE);
       const wc = EV[2]!;
       wEnd = wc - ee2 * wc;
       restitution = true;
-      if (ee2 === 0) return finish(q, from, e0) ? step : handOver(rest0, wEnd0, p, done);
+      if (ee2 === 0) return finish(q, from, e0) ? step : handOver(y, rest0, wEnd0, p, done);
     }
     if (restitution) {
       if (end[5]! <= wEnd) {
         const t = restitutionEnd(q, wEnd, from, dp, workStart(q, wEnd), dp, c);
-        return finish(q, t, e0) ? step : handOver(rest0, wEnd0, p, done);
+        return finish(q, t, e0) ? step : handOver(y, rest0, wEnd0, p, done);
       }
-      if (end[1]! >= 0) return handOver(rest0, wEnd0, p, done); // vy back at zero: stalled (the solver decides)
+      if (end[1]! >= 0) return handOver(y, rest0, wEnd0, p, done); // vy back at zero: stalled (the solver decides)
     }
     // The slips at the step's end only: with the cut above, a slip whose closest approach to zero
     // is below the threshold reaches the step's end before it (to first order in the step), so a
     // dip inside the step shows at its end. (A check in the middle as well never fired over
     // 217,836 impacts, random and structured, and cost 9% of the time.)
-    if (!slipsAbove(end, s, c, min2)) return handOver(rest0, wEnd0, p, done);
+    if (!slipsAbove(end, s, c, min2)) return handOver(y, rest0, wEnd0, p, done);
     rolling = false;
-    for (let i = 0; i < 6; i++) y[i] = end[i]!;
+    const start = y;
+    y = end;
+    end = start;
     p += dp;
   }
-  return handOver(restitution, wEnd, p, -EXPRESS_MAX_STEPS);
+  return handOver(y, restitution, wEnd, p, -EXPRESS_MAX_STEPS);
 }
 
-/** Records where the solver continues (EXPRESS_HANDOVER, with EXPRESS_FROM) and returns code. */
-function handOver(restitution: boolean, wEnd: number, p: number, code: number): number {
+/**
+ * Records where the solver continues (EXPRESS_HANDOVER, and the state from in EXPRESS_FROM) and
+ * returns code.
+ */
+function handOver(from: Float64Array, restitution: boolean, wEnd: number, p: number, code: number): number {
+  if (from !== Y) Y.set(from);
   const h = EXPRESS_HANDOVER;
   h.restitution = restitution;
   h.wEnd = wEnd;
