@@ -117,7 +117,8 @@ export function compressionEnd(q: Float64Array, dp: number, c: number, done: num
   const a2 = q[NT + 2]!;
   const disc = a1 * a1 - 4 * a2 * a0;
   // a0 + a1 x + a2 x² = 0 with a0 > 0: the smallest positive root, without cancellation.
-  let x = disc >= 0 && Math.sqrt(disc) - a1 > 0 ? (2 * a0) / (Math.sqrt(disc) - a1) : -a0 / a1;
+  const den = disc >= 0 ? Math.sqrt(disc) - a1 : 0;
+  let x = den > 0 ? (2 * a0) / den : -a0 / a1;
   let lo = 0;
   let hi = dp;
   if (!(x > lo && x < hi)) x = 0.5 * dp;
