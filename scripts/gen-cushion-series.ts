@@ -250,9 +250,11 @@ function rollingDirection(k: number): void {
   w(`  const Bx${k} = (wCx * uIx${k} + 3.5 * (nm${k} * uCx0 + Hx${k})) * ${inv};`);
   w(`  const By${k} = (wCy * uIy${k} + 3.5 * (nm${k} * uCy0 + Hy${k})) * ${inv};`);
   w(`  const beta${k} = 3.5 * ${inv} * nm0 * iC;`);
+  // (1 - β_k) is known from order 0: its reciprocal stays off the chain that w_k is on.
+  w(`  const dB${k} = 1 / (1 - beta${k});`);
   // Along u and across it (n = (-u_y, u_x)).
   w(`  const wPar${k} = (Bx${k} * uCx0 + By${k} * uCy0) - beta${k} * (oC${k} + (Sx${k} * uCx0 + Sy${k} * uCy0));`);
-  w(`  const wPerp${k} = ((By${k} * uCx0 - Bx${k} * uCy0) - beta${k} * (Sy${k} * uCx0 - Sx${k} * uCy0)) / (1 - beta${k});`);
+  w(`  const wPerp${k} = ((By${k} * uCx0 - Bx${k} * uCy0) - beta${k} * (Sy${k} * uCx0 - Sx${k} * uCy0)) * dB${k};`);
   w(`  const wCx${k} = wPar${k} * uCx0 - wPerp${k} * uCy0;`);
   w(`  const wCy${k} = wPar${k} * uCy0 + wPerp${k} * uCx0;`);
   w(`  const rC${k} = wPar${k} + oC${k};`);

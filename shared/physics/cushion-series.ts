@@ -341,8 +341,9 @@ export function cushionSeriesRolling(y: Float64Array, q: Float64Array, k: Float6
   const Bx1 = (wCx * uIx1 + 3.5 * (nm1 * uCx0 + Hx1)) * 0.5;
   const By1 = (wCy * uIy1 + 3.5 * (nm1 * uCy0 + Hy1)) * 0.5;
   const beta1 = 3.5 * 0.5 * nm0 * iC;
+  const dB1 = 1 / (1 - beta1);
   const wPar1 = (Bx1 * uCx0 + By1 * uCy0) - beta1 * (oC1 + (Sx1 * uCx0 + Sy1 * uCy0));
-  const wPerp1 = ((By1 * uCx0 - Bx1 * uCy0) - beta1 * (Sy1 * uCx0 - Sx1 * uCy0)) / (1 - beta1);
+  const wPerp1 = ((By1 * uCx0 - Bx1 * uCy0) - beta1 * (Sy1 * uCx0 - Sx1 * uCy0)) * dB1;
   const wCx1 = wPar1 * uCx0 - wPerp1 * uCy0;
   const wCy1 = wPar1 * uCy0 + wPerp1 * uCx0;
   const rC1 = wPar1 + oC1;
@@ -375,8 +376,9 @@ export function cushionSeriesRolling(y: Float64Array, q: Float64Array, k: Float6
   const Bx2 = (wCx * uIx2 + 3.5 * (nm2 * uCx0 + Hx2)) * 0.3333333333333333;
   const By2 = (wCy * uIy2 + 3.5 * (nm2 * uCy0 + Hy2)) * 0.3333333333333333;
   const beta2 = 3.5 * 0.3333333333333333 * nm0 * iC;
+  const dB2 = 1 / (1 - beta2);
   const wPar2 = (Bx2 * uCx0 + By2 * uCy0) - beta2 * (oC2 + (Sx2 * uCx0 + Sy2 * uCy0));
-  const wPerp2 = ((By2 * uCx0 - Bx2 * uCy0) - beta2 * (Sy2 * uCx0 - Sx2 * uCy0)) / (1 - beta2);
+  const wPerp2 = ((By2 * uCx0 - Bx2 * uCy0) - beta2 * (Sy2 * uCx0 - Sx2 * uCy0)) * dB2;
   const wCx2 = wPar2 * uCx0 - wPerp2 * uCy0;
   const wCy2 = wPar2 * uCy0 + wPerp2 * uCx0;
   const rC2 = wPar2 + oC2;
@@ -409,8 +411,9 @@ export function cushionSeriesRolling(y: Float64Array, q: Float64Array, k: Float6
   const Bx3 = (wCx * uIx3 + 3.5 * (nm3 * uCx0 + Hx3)) * 0.25;
   const By3 = (wCy * uIy3 + 3.5 * (nm3 * uCy0 + Hy3)) * 0.25;
   const beta3 = 3.5 * 0.25 * nm0 * iC;
+  const dB3 = 1 / (1 - beta3);
   const wPar3 = (Bx3 * uCx0 + By3 * uCy0) - beta3 * (oC3 + (Sx3 * uCx0 + Sy3 * uCy0));
-  const wPerp3 = ((By3 * uCx0 - Bx3 * uCy0) - beta3 * (Sy3 * uCx0 - Sx3 * uCy0)) / (1 - beta3);
+  const wPerp3 = ((By3 * uCx0 - Bx3 * uCy0) - beta3 * (Sy3 * uCx0 - Sx3 * uCy0)) * dB3;
   const wCx3 = wPar3 * uCx0 - wPerp3 * uCy0;
   const wCy3 = wPar3 * uCy0 + wPerp3 * uCx0;
   const rC3 = wPar3 + oC3;
@@ -443,8 +446,9 @@ export function cushionSeriesRolling(y: Float64Array, q: Float64Array, k: Float6
   const Bx4 = (wCx * uIx4 + 3.5 * (nm4 * uCx0 + Hx4)) * 0.2;
   const By4 = (wCy * uIy4 + 3.5 * (nm4 * uCy0 + Hy4)) * 0.2;
   const beta4 = 3.5 * 0.2 * nm0 * iC;
+  const dB4 = 1 / (1 - beta4);
   const wPar4 = (Bx4 * uCx0 + By4 * uCy0) - beta4 * (oC4 + (Sx4 * uCx0 + Sy4 * uCy0));
-  const wPerp4 = ((By4 * uCx0 - Bx4 * uCy0) - beta4 * (Sy4 * uCx0 - Sx4 * uCy0)) / (1 - beta4);
+  const wPerp4 = ((By4 * uCx0 - Bx4 * uCy0) - beta4 * (Sy4 * uCx0 - Sx4 * uCy0)) * dB4;
   const wCx4 = wPar4 * uCx0 - wPerp4 * uCy0;
   const wCy4 = wPar4 * uCy0 + wPerp4 * uCx0;
   const rC4 = wPar4 + oC4;
@@ -477,8 +481,9 @@ export function cushionSeriesRolling(y: Float64Array, q: Float64Array, k: Float6
   const Bx5 = (wCx * uIx5 + 3.5 * (nm5 * uCx0 + Hx5)) * 0.16666666666666666;
   const By5 = (wCy * uIy5 + 3.5 * (nm5 * uCy0 + Hy5)) * 0.16666666666666666;
   const beta5 = 3.5 * 0.16666666666666666 * nm0 * iC;
+  const dB5 = 1 / (1 - beta5);
   const wPar5 = (Bx5 * uCx0 + By5 * uCy0) - beta5 * (oC5 + (Sx5 * uCx0 + Sy5 * uCy0));
-  const wPerp5 = ((By5 * uCx0 - Bx5 * uCy0) - beta5 * (Sy5 * uCx0 - Sx5 * uCy0)) / (1 - beta5);
+  const wPerp5 = ((By5 * uCx0 - Bx5 * uCy0) - beta5 * (Sy5 * uCx0 - Sx5 * uCy0)) * dB5;
   const wCx5 = wPar5 * uCx0 - wPerp5 * uCy0;
   const wCy5 = wPar5 * uCy0 + wPerp5 * uCx0;
   const rC5 = wPar5 + oC5;
@@ -511,8 +516,9 @@ export function cushionSeriesRolling(y: Float64Array, q: Float64Array, k: Float6
   const Bx6 = (wCx * uIx6 + 3.5 * (nm6 * uCx0 + Hx6)) * 0.14285714285714285;
   const By6 = (wCy * uIy6 + 3.5 * (nm6 * uCy0 + Hy6)) * 0.14285714285714285;
   const beta6 = 3.5 * 0.14285714285714285 * nm0 * iC;
+  const dB6 = 1 / (1 - beta6);
   const wPar6 = (Bx6 * uCx0 + By6 * uCy0) - beta6 * (oC6 + (Sx6 * uCx0 + Sy6 * uCy0));
-  const wPerp6 = ((By6 * uCx0 - Bx6 * uCy0) - beta6 * (Sy6 * uCx0 - Sx6 * uCy0)) / (1 - beta6);
+  const wPerp6 = ((By6 * uCx0 - Bx6 * uCy0) - beta6 * (Sy6 * uCx0 - Sx6 * uCy0)) * dB6;
   const wCx6 = wPar6 * uCx0 - wPerp6 * uCy0;
   const wCy6 = wPar6 * uCy0 + wPerp6 * uCx0;
   const rC6 = wPar6 + oC6;
@@ -545,8 +551,9 @@ export function cushionSeriesRolling(y: Float64Array, q: Float64Array, k: Float6
   const Bx7 = (wCx * uIx7 + 3.5 * (nm7 * uCx0 + Hx7)) * 0.125;
   const By7 = (wCy * uIy7 + 3.5 * (nm7 * uCy0 + Hy7)) * 0.125;
   const beta7 = 3.5 * 0.125 * nm0 * iC;
+  const dB7 = 1 / (1 - beta7);
   const wPar7 = (Bx7 * uCx0 + By7 * uCy0) - beta7 * (oC7 + (Sx7 * uCx0 + Sy7 * uCy0));
-  const wPerp7 = ((By7 * uCx0 - Bx7 * uCy0) - beta7 * (Sy7 * uCx0 - Sx7 * uCy0)) / (1 - beta7);
+  const wPerp7 = ((By7 * uCx0 - Bx7 * uCy0) - beta7 * (Sy7 * uCx0 - Sx7 * uCy0)) * dB7;
   const wCx7 = wPar7 * uCx0 - wPerp7 * uCy0;
   const wCy7 = wPar7 * uCy0 + wPerp7 * uCx0;
   const rC7 = wPar7 + oC7;
