@@ -199,8 +199,9 @@ describe('express path', () => {
 
   it('chooses its steps by the ratio test: most of the grid in three steps or fewer, the hard ones still accurate', () => {
     // The last terms alone (Jorba and Zou's choice: RATIO_GAIN 1) end 176 of the 528 impacts in
-    // at most three series steps at this tolerance. Topspin and sidespin k = 2 at 65-75° is where
-    // the terms' ratio misleads: with RATIO_GAIN 2 these ended 8.7e-6 and 1.0e-5 V0 off.
+    // at most three series steps at this tolerance (200 at the solver's, as before the ratio
+    // test). Topspin and sidespin k = 2 at 65° and 75° is where the terms' ratio misleads: with
+    // RATIO_GAIN 2 these ended 1.0e-5 and 8.7e-6 V0 off.
     let short = 0;
     for (const g of benchGrid(PAPER.R)) {
       const n = expressSteps(g.state, PAPER);
