@@ -207,13 +207,17 @@ describe('express path', () => {
       const n = expressSteps(g.state, PAPER);
       if (n > 0 && n <= 3) short++;
     }
-    expect(short).toBeGreaterThan(280); // 300 with the ratio test
+    expect(short).toBeGreaterThan(280); // 296 with the ratio test
     for (const [alpha, kT, kS] of [[75, 2, 2], [65, 2, 2], [25, 2, 2]] as const) {
       const st = paperState(2, alpha, kT, kS, PAPER.R);
       const x = express(st, PAPER);
       expect(x).not.toBeNull();
       expect(relError(asState(x!), referenceRebound(st, PAPER).state, PAPER.R, 2)).toBeLessThan(3e-6);
     }
+    // The floor on the last term's level (RATIO_FLOOR) binds at 75°: 1.4e-6 V0 with it, 1.95e-6
+    // without.
+    const st = paperState(2, 75, 2, 2, PAPER.R);
+    expect(relError(asState(express(st, PAPER)!), referenceRebound(st, PAPER).state, PAPER.R, 2)).toBeLessThan(1.6e-6);
   });
 
   it('agrees with the solver on random impacts with the tables\' constants', () => {
