@@ -201,7 +201,7 @@ describe('express path', () => {
     // The last terms alone (Jorba and Zou's choice: RATIO_GAIN 1) end 176 of the 528 impacts in
     // at most three series steps at this tolerance (200 at the solver's, as before the ratio
     // test). Topspin and sidespin k = 2 at 65° and 75° is where the terms' ratio misleads: with
-    // RATIO_GAIN 2 these ended 1.0e-5 and 8.7e-6 V0 off.
+    // RATIO_GAIN 2 and no RATIO_FLOOR these ended 1.0e-5 and 8.7e-6 V0 off.
     let short = 0;
     for (const g of benchGrid(PAPER.R)) {
       const n = expressSteps(g.state, PAPER);
