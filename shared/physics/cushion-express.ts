@@ -298,7 +298,8 @@ export function expressImpact(
     const n = n7 > n8 ? n7 : n8;
     const t = Math.sqrt(Math.sqrt(Math.sqrt(n))); // L / (the last terms' step)
     let dp = n > 0 ? L / t : hMax;
-    // The ratio test: with the terms falling by r = n8 / n7 an order (in units of L), the
+    // The ratio test: with the terms falling by r = n8 / n7 an order (in units of L; n8 floored,
+    // below; each n_k is the largest over the variables, so r may mix two of them), the
     // series' tail past p^8 at x = h / L is about n8 x^8 · x r / (1 - x r), a geometric series,
     // which on most steps is far below the last terms themselves. The step where that tail meets
     // the tolerance, with x r / (1 - x r) taken at the last terms' step x0 = 1 / t:
