@@ -6,7 +6,8 @@ import { EXPRESS_FROM, EXPRESS_HANDOVER, EXPRESS_OUT, expressImpact } from './cu
 import { CushionSolver } from './cushion-solver.ts';
 import type { CushionTracePoint } from './cushion-solver.ts';
 import type { CushionOptions, CushionOutcome, CushionParams, CushionState } from './cushion-types.ts';
-import { resolveTolerance, validateParams, validateState } from './cushion-validate.ts';
+import { CUSHION_TOLERANCES } from './cushion-types.ts';
+import { inputsValid, resolveTolerance, throwInvalid, validateParams, validateState } from './cushion-validate.ts';
 
 /** A plain, mutable copy of a state. */
 export interface CushionStateOut {
@@ -35,10 +36,33 @@ let expressSteps = 0;
 let expressBefore = 0;
 let expressR = 1;
 
+/** The express result (EXPRESS_OUT) as a plain state, the spins in rad/s. */
+function expressResult(R: number): CushionStateOut {
+  const y = EXPRESS_OUT;
+  // + 0 turns -0 into 0.
+  return { vx: y[0]! + 0, vy: y[1]! + 0, wx: y[2]! / R + 0, wy: y[3]! / R + 0, wz: y[4]! / R + 0 };
+}
+
 /**
- * Checks the input and solves the impact: on the express path, or by the solver from the start
- * or from where the express path left; false when vy <= 0 (no impact). `express` false: the
- * solver only (traces, tests).
+ * The solver's part of an impact the express path did not end (n: expressImpact's code, 0 or
+ * minus its steps): from the start, or from where the express path left.
+ */
+function solverFrom(
+  n: number, vx: number, vy: number, wx: number, wy: number, wz: number,
+  M: number, R: number, h: number, ee: number, muS: number, muW: number, tol: number,
+): void {
+  if (n < 0) {
+    const at = EXPRESS_HANDOVER;
+    solver.resume(vx, vy, M, R, h, ee, muS, muW, tol, EXPRESS_FROM, at.restitution, at.wEnd, at.p);
+  } else {
+    solver.solve(vx, vy, wx, wy, wz, M, R, h, ee, muS, muW, tol);
+  }
+}
+
+/**
+ * Checks the input and solves the impact, recording its step counts: on the express path, or by
+ * the solver from the start or from where the express path left; false when vy <= 0 (no
+ * impact). `express` false: the solver only (traces, tests).
  */
 function solve(
   state: CushionState, params: CushionParams, options: CushionOptions | undefined, express: boolean,
@@ -48,33 +72,22 @@ function solve(
   const tol = resolveTolerance(options);
   expressSteps = 0;
   expressBefore = 0;
-  if (!(state.vy > 0)) return false;
+  const { vx, vy, wx, wy, wz } = state;
+  if (!(vy > 0)) return false;
   const { M, R, h, ee, muS, muW } = params;
-  if (express) {
-    const n = expressImpact(state.vx, state.vy, state.wx, state.wy, state.wz, R, h, ee, muS, muW, tol);
-    expressR = R;
-    if (n > 0) {
-      expressSteps = n;
-      return true;
-    }
-    if (n < 0) {
-      expressBefore = -n;
-      const at = EXPRESS_HANDOVER;
-      solver.resume(state.vx, state.vy, M, R, h, ee, muS, muW, tol, EXPRESS_FROM, at.restitution, at.wEnd, at.p);
-      return true;
-    }
+  const n = express ? expressImpact(vx, vy, wx, wy, wz, R, h, ee, muS, muW, tol) : 0;
+  expressR = R;
+  if (n > 0) expressSteps = n;
+  else {
+    expressBefore = -n;
+    solverFrom(n, vx, vy, wx, wy, wz, M, R, h, ee, muS, muW, tol);
   }
-  solver.solve(state.vx, state.vy, state.wx, state.wy, state.wz, M, R, h, ee, muS, muW, tol);
   return true;
 }
 
 /** The last impact's result as a plain state (rad/s for the spins). */
 function result(): CushionStateOut {
-  if (expressSteps === 0) return solver.result();
-  const y = EXPRESS_OUT;
-  const R = expressR;
-  // + 0 turns -0 into 0.
-  return { vx: y[0]! + 0, vy: y[1]! + 0, wx: y[2]! / R + 0, wy: y[3]! / R + 0, wz: y[4]! / R + 0 };
+  return expressSteps === 0 ? solver.result() : expressResult(expressR);
 }
 
 function copyOf(state: CushionState): CushionStateOut {
@@ -99,8 +112,22 @@ function run(
  * e_e outside [0, 1], negative friction or a bad tolerance.
  */
 export function cushionRebound(state: CushionState, params: CushionParams, options?: CushionOptions): CushionStateOut {
-  // (Without run's record: one object per impact, this is called for every cushion hit.)
-  return solve(state, params, options, true) ? result() : copyOf(state);
+  // This is called for every cushion hit: each field is read once, the checks are one expression
+  // (the messages only on failure), and no record is made (cushionImpact's run does that). The
+  // same checks, in the same order, as validateState and validateParams.
+  if (typeof state !== 'object' || state === null || typeof params !== 'object' || params === null) {
+    validateState(state);
+    validateParams(params);
+  }
+  const { vx, vy, wx, wy, wz } = state;
+  const { M, R, h, ee, muS, muW } = params;
+  if (!inputsValid(vx, vy, wx, wy, wz, M, R, h, ee, muS, muW)) throwInvalid(vx, vy, wx, wy, wz, M, R, h, ee, muS, muW);
+  const tol = options === undefined ? CUSHION_TOLERANCES.accurate : resolveTolerance(options);
+  if (!(vy > 0)) return { vx, vy, wx, wy, wz };
+  const n = expressImpact(vx, vy, wx, wy, wz, R, h, ee, muS, muW, tol);
+  if (n > 0) return expressResult(R);
+  solverFrom(n, vx, vy, wx, wy, wz, M, R, h, ee, muS, muW, tol);
+  return solver.result();
 }
 
 /** cushionRebound with its outcome and step counts. */

@@ -301,6 +301,50 @@ describe('no impact and bad input', () => {
     expect(() => cushionRebound(s, p)).toThrow(`cushionRebound: ${field} `);
   });
 
+  it('a field that is not a number, or a state or params that is not an object: a RangeError that names it', () => {
+    const cases: [string, unknown, unknown][] = [
+      ['state.vx', { ...good, vx: '0.5' }, PAPER],
+      ['state.wz', { ...good, wz: 1n }, PAPER],
+      ['state.wy', { vx: 0.5, vy: 1, wx: 0, wz: 0 }, PAPER],
+      ['params.h', good, { ...PAPER, h: undefined }],
+      ['params.muS', good, { ...PAPER, muS: null }],
+      ['state', null, PAPER],
+      ['state', 3, PAPER],
+      ['params', good, null],
+      ['params', good, 'paper'],
+      // The state is checked before the params, as the fields are in order.
+      ['state.vx', { ...good, vx: Number.NaN }, null],
+      ['state.vy', { ...good, vy: Number.NaN }, { ...PAPER, M: -1 }],
+    ];
+    for (const [field, s, p] of cases) {
+      expect(() => cushionRebound(s as CushionState, p as CushionParams)).toThrow(new RegExp(`^cushionRebound: ${field.replace('.', '\\.')} `));
+      expect(() => cushionImpact(s as CushionState, p as CushionParams)).toThrow(new RegExp(`^cushionRebound: ${field.replace('.', '\\.')} `));
+    }
+  });
+
+  it('cushionRebound gives the bits cushionImpact gives, on impacts the express path ends and on those the solver takes on', () => {
+    const outcomes = new Set<string>();
+    fc.assert(
+      fc.property(
+        fc.double({ min: 0.05, max: 5, noNaN: true }),
+        fc.double({ min: 0.5, max: 89.5, noNaN: true }),
+        fc.double({ min: -1, max: 2, noNaN: true }),
+        fc.double({ min: -2, max: 2, noNaN: true }),
+        fc.constantFrom(...TABLE_PARAMS.map(([, p]) => p)),
+        (V0, alpha, kT, kS, params) => {
+          const s = paperState(V0, alpha, kT, kS, params.R);
+          const k = cushionImpact(s, params);
+          outcomes.add(`${k.outcome}/${k.steps > 16 ? 'long' : 'short'}`);
+          expect(cushionRebound(s, params)).toStrictEqual(k.state);
+        },
+      ),
+      { numRuns: 400, seed: 3 },
+    );
+    // Both kinds of path were exercised: short impacts (the express path) and long ones (the solver).
+    expect([...outcomes].some((o) => o.endsWith('short'))).toBe(true);
+    expect([...outcomes].some((o) => o.endsWith('long'))).toBe(true);
+  });
+
   it('a bad tolerance: a RangeError naming options.tolerance', () => {
     for (const tolerance of [0, -1, 1, Number.NaN, 'precise' as never]) {
       expect(() => cushionRebound(good, PAPER, { tolerance })).toThrow(/options\.tolerance/);
