@@ -40,6 +40,12 @@ export const QS_EXIT = 1e-5;
  * step twice as long (0.5 vy/c) left 1.6e-5 V0 errors on natural-roll impacts; with it 4e-6.
  */
 export const QS_GROW = 0.1;
+/**
+ * With the table contact rolling, a cushion slip whose x part is at most this fraction of its y
+ * part, and shrinking, is put exactly on ±y (CushionSolver.run): there it stays, and its
+ * relaxation no longer bounds the steps.
+ */
+export const PIN_FRACTION = 1e-7;
 /** Largest turn of a slip direction in one step (radians), predicted from its rate. */
 export const TURN_MAX = 0.5;
 /**
