@@ -265,6 +265,18 @@ describe('an impact whose restitution can never reach its target', () => {
     }
   });
 
+  it('a slaved slip that its aimed steps leave where it is is taken as zero (μw 6e-12 below the both-rolling threshold)', () => {
+    // h = 1.98 R, e_e = 1, 89.5°, no spin: the slaved cushion slip's rate predicted a zero 1e-5
+    // of impulse away, and each step there left it unchanged, to the step cap (the reference
+    // does not end on it either). Now it ends, finite, without gaining energy.
+    const p = { M, R, h: 0.05197499999999995, ee: 0.9999999999999984, muS: 0.5, muW: 0.10050378152534081 };
+    const st = { vx: 0.001561484115536786, vy: 0.17892835699765627, wx: -2.091399195068263e-259, wy: 1.8251364273066504e-261, wz: 8.329744922554946e-107 };
+    const k = cushionImpact(st, p);
+    expect(k.steps).toBeLessThan(200);
+    expect(finite(k.state)).toBe(true);
+    expect(energy(k.state, M, R)).toBeLessThanOrEqual(energy(st, M, R));
+  });
+
   it('a contact decided rolling is never aimed at zero again (regression: a loop of steps too small to move)', () => {
     // μw 0.5 at the paper's height: both slips reach zero together, the table contact rolls and
     // the cushion contact slips on; a stale slaving flag on the rolling contact made every step
