@@ -42,20 +42,25 @@ function energyOf(vx: number, vy: number, wx: number, wy: number, wz: number, R:
 }
 
 /**
- * The result o with no more kinetic and rotational energy than the ball brought (e0,
- * energyOf the input). The model only dissipates, but where it dissipates next to nothing
- * (friction near 0, e_e near 1) the integration's error, inside the tolerance, can show as a
- * gain: 3.0e-8 of the energy on a random draw with μs 8.5e-7, μw 0, e_e 1 - 1.6e-15 and
- * h = 1.02 R, from both the express path and the solver. Such a result is scaled down to e0
- * (every component by the same factor, so zeros and symmetries stay), which moves it by about
- * half the gain's fraction, far inside the tolerance.
+ * The result o as the ball leaves: not moving into the cushion, and with no more kinetic and
+ * rotational energy than it brought (e0, energyOf the input).
+ * - vy > 0 is set to 0: with e_e near 0 but not 0, restitution ends where the work has fallen
+ *   by e_e² W_c, at the rounding of W_c, which can fall a hair before vy's zero (vy 1e-39 to
+ *   1e-238 m/s on random draws with e_e below 1e-8; docs/cushion.md, Limits).
+ * - The model only dissipates, but where it dissipates next to nothing (friction near 0, e_e
+ *   near 1) the integration's error, inside the tolerance, can show as a gain: 3.0e-8 of the
+ *   energy on a random draw with μs 8.5e-7, μw 0, e_e 1 - 1.6e-15 and h = 1.02 R, from both the
+ *   express path and the solver. Such a result is scaled down to e0 (every component by the
+ *   same factor, so zeros and symmetries stay), which moves it by about half the gain's
+ *   fraction, far inside the tolerance.
  */
-function withoutGain(o: CushionStateOut, e0: number, R: number): CushionStateOut {
-  const e = energyOf(o.vx, o.vy, o.wx, o.wy, o.wz, R);
-  if (!(e > e0)) return o;
+function leaving(o: CushionStateOut, e0: number, R: number): CushionStateOut {
+  const vy = o.vy > 0 ? 0 : o.vy;
+  const e = energyOf(o.vx, vy, o.wx, o.wy, o.wz, R);
+  if (!(e > e0)) return vy === o.vy ? o : { vx: o.vx, vy, wx: o.wx, wy: o.wy, wz: o.wz };
   // (1 - 4 ε): the scaled energy then lies below e0 whatever the rounding of its sum.
   const k = Math.sqrt(e0 / e) * (1 - 4 * Number.EPSILON);
-  return { vx: o.vx * k + 0, vy: o.vy * k + 0, wx: o.wx * k + 0, wy: o.wy * k + 0, wz: o.wz * k + 0 };
+  return { vx: o.vx * k + 0, vy: vy * k + 0, wx: o.wx * k + 0, wy: o.wy * k + 0, wz: o.wz * k + 0 };
 }
 
 /** The express result (EXPRESS_OUT) as a plain state, the spins in rad/s. */
@@ -124,10 +129,10 @@ function run(
   }
   const e0 = energyOf(state.vx, state.vy, state.wx, state.wy, state.wz, params.R);
   if (expressSteps > 0) {
-    return { state: withoutGain(result(), e0, params.R), outcome: 'restitution', steps: expressSteps, rejectedSteps: 0 };
+    return { state: leaving(result(), e0, params.R), outcome: 'restitution', steps: expressSteps, rejectedSteps: 0 };
   }
   const steps = expressBefore + solver.steps;
-  return { state: withoutGain(solver.result(), e0, params.R), outcome: solver.outcome, steps, rejectedSteps: solver.rejected };
+  return { state: leaving(solver.result(), e0, params.R), outcome: solver.outcome, steps, rejectedSteps: solver.rejected };
 }
 
 /**
@@ -151,9 +156,9 @@ export function cushionRebound(state: CushionState, params: CushionParams, optio
   if (!(vy > 0)) return { vx, vy, wx, wy, wz };
   const n = expressImpact(vx, vy, wx, wy, wz, R, h, ee, muS, muW, tol);
   const e0 = energyOf(vx, vy, wx, wy, wz, R);
-  if (n > 0) return withoutGain(expressResult(R), e0, R);
+  if (n > 0) return leaving(expressResult(R), e0, R);
   solverFrom(n, vx, vy, wx, wy, wz, M, R, h, ee, muS, muW, tol);
-  return withoutGain(solver.result(), e0, R);
+  return leaving(solver.result(), e0, R);
 }
 
 /** cushionRebound with its outcome and step counts. */

@@ -165,6 +165,29 @@ describe('frictionless and extreme restitution', () => {
       matchesReference(s, { ...PAPER, ee: 1 });
     }
   });
+
+  it('e_e near 0 but not 0: the ball never leaves moving into the cushion (vy <= 0)', () => {
+    // Restitution then ends at the rounding of W_c, which can fall a hair before vy's zero: on
+    // random draws vy came out at 1e-39 to 1e-238 m/s, into the cushion.
+    fc.assert(
+      fc.property(
+        fc.double({ min: 1e-6, max: 5, noNaN: true }),
+        fc.double({ min: 0.5, max: 89.5, noNaN: true }),
+        fc.double({ min: -2, max: 2, noNaN: true }),
+        fc.double({ min: -2, max: 2, noNaN: true }),
+        fc.double({ min: 1.02, max: 1.98, noNaN: true }),
+        fc.double({ min: 0, max: 1e-8, noNaN: true }),
+        fc.double({ min: 0, max: 1, noNaN: true }),
+        fc.double({ min: 0, max: 1, noNaN: true }),
+        (V0, alpha, kT, kS, hR, ee, muS, muW) => {
+          const p = { M, R, h: hR * R, ee, muS, muW };
+          const st = paperState(V0, alpha, kT, kS, R);
+          return cushionRebound(st, p).vy <= 0 && cushionImpact(st, p).state.vy <= 0;
+        },
+      ),
+      { numRuns: 500, seed: 12 },
+    );
+  });
 });
 
 describe('an impact whose restitution can never reach its target', () => {
