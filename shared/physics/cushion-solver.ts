@@ -18,7 +18,7 @@ import type { FastHost } from './cushion-fast.ts';
 import { CushionModel, SLIDE, STICK } from './cushion-model.ts';
 import type { CushionOutcome } from './cushion-types.ts';
 import {
-  errorMemory, EVENT_FRACTION, FIRST_MEMORY, HINT_FRACTION, invRoot, MAX_STEPS, IDLE_AIMS, nextStep, PIN_FRACTION, QS_EXIT, QS_FRACTION, QS_GROW, QS_HOLD_RHO, QS_RHO, RELAX_MAX,
+  errorMemory, EVENT_FRACTION, FIRST_MEMORY, HINT_FRACTION, IDLE_AIMS, invRoot, MAX_STEPS, nextStep, PIN_FRACTION, QS_EXIT, QS_FRACTION, QS_GROW, QS_HOLD_RHO, QS_RHO, RELAX_MAX,
   TURN_MAX,
   ZERO_FRACTION,
 } from './cushion-control.ts';
@@ -726,7 +726,10 @@ export class CushionSolver implements FastHost {
           }
         }
         if (t < step) this.setAim(contact, along, t);
-        else this.clearAim(contact);
+        else {
+          this.clearAim(contact);
+          this.idleAims = 0;
+        }
         if (t < d) d = t;
       } else if (lam > 0) {
         // Growing: its exit from slaving is checked at step starts, so one step must not carry
