@@ -46,11 +46,6 @@ export const QS_GROW = 0.1;
  * relaxation no longer bounds the steps.
  */
 export const PIN_FRACTION = 1e-7;
-/**
- * Steps in a row that reach a shrinking slaved slip's predicted zero and leave more than half of
- * it, after which it is taken as zero (CushionSolver.slavedStart).
- */
-export const IDLE_AIMS = 3;
 /** Largest turn of a slip direction in one step (radians), predicted from its rate. */
 export const TURN_MAX = 0.5;
 /**

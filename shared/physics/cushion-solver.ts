@@ -18,7 +18,7 @@ import type { FastHost } from './cushion-fast.ts';
 import { CushionModel, SLIDE, STICK } from './cushion-model.ts';
 import type { CushionOutcome } from './cushion-types.ts';
 import {
-  errorMemory, EVENT_FRACTION, FIRST_MEMORY, HINT_FRACTION, IDLE_AIMS, invRoot, MAX_STEPS, nextStep, PIN_FRACTION, QS_EXIT, QS_FRACTION, QS_GROW, QS_HOLD_RHO, QS_RHO, RELAX_MAX,
+  errorMemory, EVENT_FRACTION, FIRST_MEMORY, HINT_FRACTION, invRoot, MAX_STEPS, nextStep, PIN_FRACTION, QS_EXIT, QS_FRACTION, QS_GROW, QS_HOLD_RHO, QS_RHO, RELAX_MAX,
   TURN_MAX,
   ZERO_FRACTION,
 } from './cushion-control.ts';
@@ -84,18 +84,6 @@ export class CushionSolver implements FastHost {
   innerSteps = 0;
   /** Set by slavedStart: bit 0 (I) and bit 1 (C) for a slaved slip that is zero now. */
   private zeroNow = 0;
-  /**
-   * A shrinking slaved slip aimed at its predicted zero (slavedStart): its part along its
-   * direction then, the impulse there and the distance predicted, for I and C; and how many
-   * such steps in a row covered that distance and left more than half of the slip.
-   */
-  private aimAlongI = 0;
-  private aimPI = 0;
-  private aimTI = 0;
-  private aimAlongC = 0;
-  private aimPC = 0;
-  private aimTC = 0;
-  private idleAims = 0;
   private M = 1.5;
   private R = 1.5;
   V = 1.5;
@@ -173,9 +161,6 @@ export class CushionSolver implements FastHost {
     this.wEnd = 0;
     this.steps = 0;
     this.slavingRejects = 0;
-    this.aimAlongI = 0;
-    this.aimAlongC = 0;
-    this.idleAims = 0;
     this.innerSteps = 0;
     this.rejected = 0;
     this.outcome = 'restitution';
@@ -705,31 +690,6 @@ export class CushionSolver implements FastHost {
       }
       if (lam < 0 && along > 0) {
         const t = along / -lam;
-        // The last step went all the way to the zero this slip's slaved rate predicted and left
-        // more than half of it: that rate does not describe it (seen with μw within 1e-11 of the
-        // both-rolling threshold, where it predicted 0.28 and the slip did not move, step after
-        // step, to the step cap). At the third such step in a row it is taken as zero and the
-        // rolling conditions decide.
-        const aimAlong = contact === 0 ? this.aimAlongI : this.aimAlongC;
-        const aimP = contact === 0 ? this.aimPI : this.aimPC;
-        const aimT = contact === 0 ? this.aimTI : this.aimTC;
-        if (aimAlong > 0 && this.p - aimP >= 0.99 * aimT) {
-          if (along > 0.5 * aimAlong) {
-            if (++this.idleAims >= IDLE_AIMS) {
-              this.idleAims = 0;
-              this.clearAim(contact);
-              this.zeroNow |= contact === 0 ? 1 : 2;
-              continue;
-            }
-          } else {
-            this.idleAims = 0;
-          }
-        }
-        if (t < step) this.setAim(contact, along, t);
-        else {
-          this.clearAim(contact);
-          this.idleAims = 0;
-        }
         if (t < d) d = t;
       } else if (lam > 0) {
         // Growing: its exit from slaving is checked at step starts, so one step must not carry
@@ -739,24 +699,6 @@ export class CushionSolver implements FastHost {
       }
     }
     return d < step ? d : step;
-  }
-
-  /** Records that contact's slaved slip is aimed at its predicted zero (see slavedStart). */
-  private setAim(contact: number, along: number, t: number): void {
-    if (contact === 0) {
-      this.aimAlongI = along;
-      this.aimPI = this.p;
-      this.aimTI = t;
-    } else {
-      this.aimAlongC = along;
-      this.aimPC = this.p;
-      this.aimTC = t;
-    }
-  }
-
-  private clearAim(contact: number): void {
-    if (contact === 0) this.aimAlongI = 0;
-    else this.aimAlongC = 0;
   }
 
   /**
