@@ -609,14 +609,17 @@ export class CushionModel {
   }
 
   /**
-   * Both slips are zero (which needs vy = 0). Both roll if the constant rolling frictions
-   * c/(1+s) fit in both cones (then nothing changes any more: the solver ends). Otherwise C
-   * rolls and I slips if that is consistent (I's onset from its rates with C rolling:
-   * dxI/dp = K1 gx, dyI/dp = 5/7 (1+s) c + K3 gy); otherwise both slip, I upward and C
-   * downward along t and y, the directions opposite to the frictions both-rolling would need
-   * (an approximation for this measure-zero case, documented in docs/cushion.md).
+   * Both slips are zero (which needs vy = 0) at state y. Both roll if the constant rolling
+   * frictions c/(1+s) fit in both cones (then nothing changes any more: the solver ends).
+   * Otherwise C rolls and I slips if that is consistent (I's onset from its rates with C
+   * rolling: dxI/dp = K1 gx, dyI/dp = 5/7 (1+s) c + K3 gy); otherwise I rolls and C slips, opposite
+   * to the friction both-rolling would need, if I's rolling friction with C slipping so fits in
+   * I's cone; otherwise both slip, I upward and C downward along t and y, the directions opposite
+   * to the frictions both-rolling would need (an approximation, documented in docs/cushion.md).
+   * (Both slips reach zero together whenever the cushion contact rolls through the end of
+   * compression of a head-on impact: the table slip is then (1 + s) vy.)
    */
-  onsetBoth(): boolean {
+  onsetBoth(y: Float64Array): boolean {
     const s = this.s;
     const c = this.c;
     const f = c / (1 + s);
@@ -647,11 +650,20 @@ export class CushionModel {
       this.modeC = STICK;
       return false;
     }
+    // I rolls and C slips along -y (opposite to the friction c/(1+s) along +y that it would need
+    // to roll), slaved as it grows: consistent if I's rolling friction (eq. 15a with C slipping)
+    // fits in I's cone.
+    this.modeI = STICK;
     this.modeC = SLIDE;
-    this.hintIx = 0;
-    this.hintIy = 1;
+    this.qsC = true;
     this.hintCx = 0;
     this.hintCy = -1;
+    this.friction(y[0]!, y[1]!, y[2]!, y[3]!, y[4]!);
+    if (this.nC > 0 && this.gx * this.gx + this.gy * this.gy <= this.muW * this.muW) return false;
+    this.qsC = false;
+    this.modeI = SLIDE;
+    this.hintIx = 0;
+    this.hintIy = 1;
     return false;
   }
 

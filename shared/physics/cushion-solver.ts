@@ -817,7 +817,7 @@ export class CushionSolver implements FastHost {
     }
     const atI = zI || m.modeI === STICK;
     const atC = zC || m.modeC === STICK;
-    if (atI && atC) return m.onsetBoth();
+    if (atI && atC) return m.onsetBoth(y);
     if (zC) m.onsetC(y);
     else m.onsetI(y);
     return false;

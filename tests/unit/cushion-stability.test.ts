@@ -295,6 +295,25 @@ describe('an impact whose restitution can never reach its target', () => {
     }
   });
 
+  it('head-on with the cushion contact rolling through the end of compression: both slips are zero there, and the impact goes on as the reference does', () => {
+    // The table slip is then (1 + s) vy, zero with vy. With the cushion high and its friction
+    // above cot θ, the approximation both-slipping (the cushion slip upward) pushed the ball back
+    // in and the impact stalled with vy = 0, up to 0.93 V0 off; the cushion contact rolling on
+    // with the table slip leaving downward is consistent, and the reference's choice.
+    const cases: [number, number, number, number, number, number][] = [
+      // h / R, e_e, μs, μw, incidence (°), topspin k
+      [1.9, 0.9, 0.2, 0.6, 90, 1],
+      [1.8623, 0.5, 0, 0.6, 90, 1],
+      [1.8623, 0.5, 0.2, 0.6, 89.9999, 1],
+      [1.8, 0.9, 0.2, 0.5, 90, 0],
+    ];
+    for (const [hR, ee, muS, muW, alpha, kT] of cases) {
+      const k = matchesReference(paperState(1, alpha, kT, 0, R), { M, R, h: hR * R, ee, muS, muW }, 200);
+      expect(k.outcome).toBe('restitution');
+      expect(k.state.vy).toBeLessThan(-0.1);
+    }
+  });
+
   it('a contact decided rolling is never aimed at zero again (regression: a loop of steps too small to move)', () => {
     // μw 0.5 at the paper's height: both slips reach zero together, the table contact rolls and
     // the cushion contact slips on; a stale slaving flag on the rolling contact made every step
