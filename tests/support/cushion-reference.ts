@@ -261,10 +261,19 @@ function decide(ctx: Ctx, y: Vec, zI: boolean, zC: boolean): boolean {
     });
     ctx.dirI = dir;
     if (stickExcess(ctx, y) <= 0) return false;
+    // I rolls, C slips along -y (opposite to the friction it would need to roll), if I's cone
+    // allows it: in a head-on impact whose cushion contact rolls through the end of compression
+    // both slips reach zero together, and this is the continuation that impacts a hair off
+    // head-on take (without it the exactly head-on one stalled where those rebound).
+    ctx.stickI = true;
+    ctx.slaveI = false;
     ctx.stickC = false;
     ctx.slaveC = true;
-    ctx.dirI = [0, 1];
     ctx.dirC = [0, -1];
+    if (stickExcess(ctx, y) <= 0) return false;
+    ctx.stickI = false;
+    ctx.slaveI = true;
+    ctx.dirI = [0, 1];
     return false;
   }
   if (zC) {
