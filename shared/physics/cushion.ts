@@ -30,11 +30,13 @@ export interface CushionImpact {
 // One solver reused by every call (JavaScript runs one call at a time; nothing is allocated
 // per step).
 const solver = new CushionSolver();
-/** Series steps of the last impact if the express path ended it (cushion-express.ts), else 0. */
-let expressSteps = 0;
-/** Series steps the express path took before the solver continued the last impact. */
-let expressBefore = 0;
-let expressR = 1;
+/** Whether the last impact had vy > 0 (an impact at all). */
+let impacted = false;
+/**
+ * expressImpact's code for the last impact: its series steps when it ended the impact, else 0
+ * or minus the steps it took before the solver continued (0 also when it was not tried).
+ */
+let expressCode = 0;
 
 /** Twice the kinetic and rotational energy per unit mass of a state (I = 2/5 M R²). */
 function energyOf(vx: number, vy: number, wx: number, wy: number, wz: number, R: number): number {
@@ -87,52 +89,41 @@ function solverFrom(
 }
 
 /**
- * Checks the input and solves the impact, recording its step counts: on the express path, or by
- * the solver from the start or from where the express path left; false when vy <= 0 (no
- * impact). `express` false: the solver only (traces, tests).
+ * Checks the input and solves the impact: on the express path (unless `express` is false: the
+ * solver only, for traces and tests), or by the solver from the start or from where the express
+ * path left. Each field is read once and the checks are one expression, the messages built only
+ * on failure (validateState and validateParams, the same checks in the same order). vy <= 0 is
+ * no impact: a copy of the state. Records impacted and expressCode for cushionImpact.
  */
-function solve(
+function impact(
   state: CushionState, params: CushionParams, options: CushionOptions | undefined, express: boolean,
-): boolean {
-  validateState(state);
-  validateParams(params);
-  const tol = resolveTolerance(options);
-  expressSteps = 0;
-  expressBefore = 0;
-  const { vx, vy, wx, wy, wz } = state;
-  if (!(vy > 0)) return false;
-  const { M, R, h, ee, muS, muW } = params;
-  const n = express ? expressImpact(vx, vy, wx, wy, wz, R, h, ee, muS, muW, tol) : 0;
-  expressR = R;
-  if (n > 0) expressSteps = n;
-  else {
-    expressBefore = -n;
-    solverFrom(n, vx, vy, wx, wy, wz, M, R, h, ee, muS, muW, tol);
+): CushionStateOut {
+  if (typeof state !== 'object' || state === null || typeof params !== 'object' || params === null) {
+    validateState(state);
+    validateParams(params);
   }
-  return true;
-}
-
-/** The last impact's result as a plain state (rad/s for the spins). */
-function result(): CushionStateOut {
-  return expressSteps === 0 ? solver.result() : expressResult(expressR);
-}
-
-function copyOf(state: CushionState): CushionStateOut {
-  return { vx: state.vx, vy: state.vy, wx: state.wx, wy: state.wy, wz: state.wz };
+  const { vx, vy, wx, wy, wz } = state;
+  const { M, R, h, ee, muS, muW } = params;
+  if (!inputsValid(vx, vy, wx, wy, wz, M, R, h, ee, muS, muW)) throwInvalid(vx, vy, wx, wy, wz, M, R, h, ee, muS, muW);
+  const tol = options === undefined ? CUSHION_TOLERANCES.accurate : resolveTolerance(options);
+  impacted = vy > 0;
+  expressCode = 0;
+  if (!impacted) return { vx, vy, wx, wy, wz };
+  const n = express ? expressImpact(vx, vy, wx, wy, wz, R, h, ee, muS, muW, tol) : 0;
+  expressCode = n;
+  const e0 = energyOf(vx, vy, wx, wy, wz, R);
+  if (n > 0) return leaving(expressResult(R), e0, R);
+  solverFrom(n, vx, vy, wx, wy, wz, M, R, h, ee, muS, muW, tol);
+  return leaving(solver.result(), e0, R);
 }
 
 function run(
   state: CushionState, params: CushionParams, options: CushionOptions | undefined, express: boolean,
 ): CushionImpact {
-  if (!solve(state, params, options, express)) {
-    return { state: copyOf(state), outcome: 'no-impact', steps: 0, rejectedSteps: 0 };
-  }
-  const e0 = energyOf(state.vx, state.vy, state.wx, state.wy, state.wz, params.R);
-  if (expressSteps > 0) {
-    return { state: leaving(result(), e0, params.R), outcome: 'restitution', steps: expressSteps, rejectedSteps: 0 };
-  }
-  const steps = expressBefore + solver.steps;
-  return { state: leaving(solver.result(), e0, params.R), outcome: solver.outcome, steps, rejectedSteps: solver.rejected };
+  const out = impact(state, params, options, express);
+  if (!impacted) return { state: out, outcome: 'no-impact', steps: 0, rejectedSteps: 0 };
+  if (expressCode > 0) return { state: out, outcome: 'restitution', steps: expressCode, rejectedSteps: 0 };
+  return { state: out, outcome: solver.outcome, steps: solver.steps - expressCode, rejectedSteps: solver.rejected };
 }
 
 /**
@@ -142,23 +133,8 @@ function run(
  * e_e outside [0, 1], negative friction or a bad tolerance.
  */
 export function cushionRebound(state: CushionState, params: CushionParams, options?: CushionOptions): CushionStateOut {
-  // This is called for every cushion hit: each field is read once, the checks are one expression
-  // (the messages only on failure), and no record is made (cushionImpact's run does that). The
-  // same checks, in the same order, as validateState and validateParams.
-  if (typeof state !== 'object' || state === null || typeof params !== 'object' || params === null) {
-    validateState(state);
-    validateParams(params);
-  }
-  const { vx, vy, wx, wy, wz } = state;
-  const { M, R, h, ee, muS, muW } = params;
-  if (!inputsValid(vx, vy, wx, wy, wz, M, R, h, ee, muS, muW)) throwInvalid(vx, vy, wx, wy, wz, M, R, h, ee, muS, muW);
-  const tol = options === undefined ? CUSHION_TOLERANCES.accurate : resolveTolerance(options);
-  if (!(vy > 0)) return { vx, vy, wx, wy, wz };
-  const n = expressImpact(vx, vy, wx, wy, wz, R, h, ee, muS, muW, tol);
-  const e0 = energyOf(vx, vy, wx, wy, wz, R);
-  if (n > 0) return leaving(expressResult(R), e0, R);
-  solverFrom(n, vx, vy, wx, wy, wz, M, R, h, ee, muS, muW, tol);
-  return leaving(solver.result(), e0, R);
+  // (Without run's record: one object per impact, this is called for every cushion hit.)
+  return impact(state, params, options, true);
 }
 
 /** cushionRebound with its outcome and step counts. */
