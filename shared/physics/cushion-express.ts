@@ -23,7 +23,7 @@
 import { ZERO_FRACTION } from './cushion-control.ts';
 import { ROOT_MOVE } from './cushion-dense.ts';
 import {
-  cushionSeries, cushionSeriesAt, cushionSeriesEvent, cushionSeriesRolling, SERIES_CUT, SERIES_LENGTH, SERIES_TERMS,
+  cushionSeries, cushionSeriesAt, cushionSeriesEvent, cushionSeriesRolling, SERIES_LENGTH,
 } from './cushion-series.ts';
 
 /**
@@ -62,9 +62,7 @@ export const EXPRESS_SLIP_MIN = 0.05;
 /** More series steps than this send the impact to the solver. */
 export const EXPRESS_MAX_STEPS = 16;
 
-const NT = SERIES_TERMS;
-const ORDER = NT - 1;
-// The series (6 variables × NT coefficients, the cut and the work's last term), its constants
+// The series (6 variables × SERIES_TERMS coefficients, the cut and the work's last term), its constants
 // and the state at a step's start.
 const Q = new Float64Array(SERIES_LENGTH);
 /** The series' constants (seriesConstants). */
@@ -131,9 +129,9 @@ const EV = EXPRESS_EVENT;
  * same pass.
  */
 export function compressionEnd(q: Float64Array, dp: number, c: number, done: number): number {
-  const a0 = q[NT]!;
-  const a1 = q[NT + 1]!;
-  const a2 = q[NT + 2]!;
+  const a0 = q[9]!; // vy's first three coefficients (q[9 i + k], i = 1)
+  const a1 = q[10]!;
+  const a2 = q[11]!;
   const disc = a1 * a1 - 4 * a2 * a0;
   // a0 + a1 x + a2 x² = 0 with a0 > 0: the smallest positive root, without cancellation.
   const den = disc >= 0 ? Math.sqrt(disc) - a1 : 0;
@@ -216,6 +214,12 @@ export function expressImpact(
   vx: number, vy: number, wx: number, wy: number, wz: number,
   R: number, h: number, ee: number, muS: number, muW: number, tol: number,
 ): number {
+  // The tuning constants as locals, read once per impact: a module-level binding is a context
+  // slot that the optimized code loads and checks at each use in the loop below.
+  const ratioGain = RATIO_GAIN;
+  const ratioMax = RATIO_MAX;
+  const ratioFloor = RATIO_FLOOR;
+  const maxSteps = EXPRESS_MAX_STEPS;
   const s = (h - R) / R;
   const c = Math.sqrt((1 - s) * (1 + s));
   // The table's normal impulse stays positive (sinθ + μw cosθ u_I,y > 0 for every direction), and
@@ -273,7 +277,7 @@ export function expressImpact(
   // The state at a step's start and at its end, trading places after each step (no copy).
   let y = Y;
   let end = END;
-  for (let step = 1; step <= EXPRESS_MAX_STEPS; step++) {
+  for (let step = 1; step <= maxSteps; step++) {
     // If this step leaves the branch, the solver continues from its start (handOver).
     const rest0 = restitution;
     const wEnd0 = wEnd;
@@ -281,17 +285,17 @@ export function expressImpact(
     if (!(rolling ? cushionSeriesRolling(y, q, K) : cushionSeries(y, q, K))) return handOver(y, rest0, wEnd0, p, done);
     // The step from the series' two last terms (after Jorba and Zou 2005): the largest h with
     // |a_k L^k| (h / L)^8 within the tolerance for k = 7 and 8, each variable against its weight.
-    let n6 = Math.abs(q[5 * NT + ORDER - 2]!) * iw;
-    let n7 = Math.abs(q[5 * NT + ORDER - 1]!) * iw;
-    let n8 = Math.abs(q[5 * NT + ORDER]!) * iw;
-    for (let i = 0; i < 5; i++) {
-      const a6 = Math.abs(q[i * NT + ORDER - 2]!) * iv;
-      if (a6 > n6) n6 = a6;
-      const a = Math.abs(q[i * NT + ORDER - 1]!) * iv;
-      if (a > n7) n7 = a;
-      const b = Math.abs(q[i * NT + ORDER]!) * iv;
-      if (b > n8) n8 = b;
-    }
+    // The largest weighted coefficients of p^6, p^7 and p^8 (q[9 i + k], SERIES_TERMS = 9: the
+    // indices are written out, a loop with computed indices cost 4% of an impact).
+    let n6 = Math.abs(q[51]!) * iw;
+    let n7 = Math.abs(q[52]!) * iw;
+    let n8 = Math.abs(q[53]!) * iw;
+    const a6 = Math.max(Math.abs(q[6]!), Math.abs(q[15]!), Math.abs(q[24]!), Math.abs(q[33]!), Math.abs(q[42]!)) * iv;
+    const a7 = Math.max(Math.abs(q[7]!), Math.abs(q[16]!), Math.abs(q[25]!), Math.abs(q[34]!), Math.abs(q[43]!)) * iv;
+    const a8 = Math.max(Math.abs(q[8]!), Math.abs(q[17]!), Math.abs(q[26]!), Math.abs(q[35]!), Math.abs(q[44]!)) * iv;
+    if (a6 > n6) n6 = a6;
+    if (a7 > n7) n7 = a7;
+    if (a8 > n8) n8 = a8;
     n6 *= w6;
     n7 *= w7;
     n8 *= w8;
@@ -314,16 +318,16 @@ export function expressImpact(
     // The last term's level for the test: at least RATIO_FLOOR of the two before's extrapolation,
     // n7² / n6 (compared without a division, which only the rare floor needs; n6 = 0 makes the
     // floor infinite, and the test then keeps x0).
-    const f8 = RATIO_FLOOR * n7 * n7;
+    const f8 = ratioFloor * n7 * n7;
     const m8 = n8 * n6 < f8 ? f8 / n6 : n8;
     if (m8 > 0 && n7 > 0 && dp < hMax) {
       const r = m8 / n7;
-      if (r < RATIO_MAX * t) {
+      if (r < ratioMax * t) {
         const g = t - r;
         let x = Math.sqrt(Math.sqrt(Math.sqrt(n7 / (m8 * m8)))) * ((7 + 9 * g) / (9 + 7 * g));
-        if (x * r > RATIO_MAX) x = RATIO_MAX / r;
+        if (x * r > ratioMax) x = ratioMax / r;
         const xt = x * t; // x / x0
-        if (xt > RATIO_GAIN) dp = (RATIO_GAIN * L) / t;
+        if (xt > ratioGain) dp = (ratioGain * L) / t;
         else if (xt > 1) dp = x * L;
       }
     }
@@ -334,7 +338,7 @@ export function expressImpact(
     // flips across a width that those terms cannot see), and past it the series would go on
     // slipping where the contact sticks. Where that leaves less than a quarter step, the solver
     // continues from here.
-    const cut = q[SERIES_CUT]!;
+    const cut = q[54]!; // q[SERIES_CUT]
     if (cut < dp) {
       if (cut < 0.25 * dp) return handOver(y, rest0, wEnd0, p, done);
       dp = cut;
@@ -366,7 +370,7 @@ export function expressImpact(
     end = start;
     p += dp;
   }
-  return handOver(y, restitution, wEnd, p, -EXPRESS_MAX_STEPS);
+  return handOver(y, restitution, wEnd, p, -maxSteps);
 }
 
 /**
@@ -387,9 +391,9 @@ function handOver(from: Float64Array, restitution: boolean, wEnd: number, p: num
  * quadratic in p: its rate c vy is nearly linear), as a start for root; -1 when it does not.
  */
 function workStart(q: Float64Array, target: number): number {
-  const a = q[5 * NT + 2]!;
-  const b = q[5 * NT + 1]!;
-  const c0 = q[5 * NT]! - target;
+  const a = q[47]!; // the work's first three coefficients (q[9 i + k], i = 5)
+  const b = q[46]!;
+  const c0 = q[45]! - target;
   // a p² + b p + c0 = 0 with a < 0 (vy falls) and c0 > 0: the positive root, without cancellation.
   const disc = b * b - 4 * a * c0;
   if (!(a < 0) || !(disc >= 0)) return -1;

@@ -13,7 +13,7 @@ import {
   restitutionEnd, SERIES_CONSTANTS, seriesConstants,
 } from '../../shared/physics/cushion-express.ts';
 import { CushionModel } from '../../shared/physics/cushion-model.ts';
-import { cushionSeries, cushionSeriesAt, SERIES_LENGTH, SERIES_TERMS } from '../../shared/physics/cushion-series.ts';
+import { cushionSeries, cushionSeriesAt, SERIES_CUT, SERIES_LENGTH, SERIES_TERMS } from '../../shared/physics/cushion-series.ts';
 import { cushionImpact } from '../../shared/physics/index.ts';
 import type { CushionParams, CushionState } from '../../shared/physics/index.ts';
 import { CUSHION_SERIES_FILE, CUSHION_SERIES_SOURCE } from '../../scripts/gen-cushion-series.ts';
@@ -54,6 +54,12 @@ function asState(v: number[]): CushionState {
 describe('cushion series', () => {
   it('is the generator\'s output (regenerate with node --import tsx scripts/gen-cushion-series.ts)', () => {
     expect(readFileSync(CUSHION_SERIES_FILE, 'utf8')).toBe(CUSHION_SERIES_SOURCE);
+  });
+
+  it('has the layout the express path reads by literal indices (q[9 i + k], the cut at 54)', () => {
+    expect(SERIES_TERMS).toBe(9);
+    expect(SERIES_CUT).toBe(54);
+    expect(SERIES_LENGTH).toBe(56);
   });
 
   it('is the Taylor series of the equations: a fine Runge-Kutta integration of the model lands on it', () => {
