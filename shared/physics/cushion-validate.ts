@@ -48,22 +48,7 @@ export function validateParams(params: CushionParams): void {
   if (!(muW >= 0)) fail('params.muW', 'must be non-negative', muW);
 }
 
-/**
- * Whether values read from a state and a params pass every check of validateState and
- * validateParams: the common case in one expression, for the entry point that reads each field
- * once (throwInvalid gives the message when it does not).
- */
-export function inputsValid(
-  vx: number, vy: number, wx: number, wy: number, wz: number,
-  M: number, R: number, h: number, ee: number, muS: number, muW: number,
-): boolean {
-  return Number.isFinite(vx) && Number.isFinite(vy) && Number.isFinite(wx) && Number.isFinite(wy) &&
-    Number.isFinite(wz) && Number.isFinite(M) && Number.isFinite(R) && Number.isFinite(h) &&
-    Number.isFinite(ee) && Number.isFinite(muS) && Number.isFinite(muW) &&
-    M > 0 && R > 0 && h > R && h < 2 * R && ee >= 0 && ee <= 1 && muS >= 0 && muW >= 0;
-}
-
-/** The RangeError for values that inputsValid refused, naming the first bad field. */
+/** The RangeError for values that the entry point's check refused (cushion.ts), naming the first bad field. */
 export function throwInvalid(
   vx: unknown, vy: unknown, wx: unknown, wy: unknown, wz: unknown,
   M: unknown, R: unknown, h: unknown, ee: unknown, muS: unknown, muW: unknown,

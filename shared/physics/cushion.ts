@@ -2,12 +2,12 @@
 // "A theoretical analysis of billiard ball dynamics under cushion impacts", Proc. IMechE C
 // 224(9):1863-1873; the method (an adaptive Runge-Kutta integration in the impulse with the
 // paper's rolling conditions at zero slip) is described in docs/cushion.md.
-import { EXPRESS_FROM, EXPRESS_HANDOVER, EXPRESS_OUT, expressImpact } from './cushion-express.ts';
+import { EXPRESS_FROM, EXPRESS_HANDOVER, EXPRESS_IN, EXPRESS_OUT, expressImpact } from './cushion-express.ts';
 import { CushionSolver } from './cushion-solver.ts';
 import type { CushionTracePoint } from './cushion-solver.ts';
 import type { CushionOptions, CushionOutcome, CushionParams, CushionState } from './cushion-types.ts';
 import { CUSHION_TOLERANCES } from './cushion-types.ts';
-import { inputsValid, resolveTolerance, throwInvalid, validateParams, validateState } from './cushion-validate.ts';
+import { resolveTolerance, throwInvalid, validateParams, validateState } from './cushion-validate.ts';
 
 /** A plain, mutable copy of a state. */
 export interface CushionStateOut {
@@ -104,12 +104,33 @@ function impact(
   }
   const { vx, vy, wx, wy, wz } = state;
   const { M, R, h, ee, muS, muW } = params;
-  if (!inputsValid(vx, vy, wx, wy, wz, M, R, h, ee, muS, muW)) throwInvalid(vx, vy, wx, wy, wz, M, R, h, ee, muS, muW);
+  // Every check of validateState and validateParams in one expression, written here rather than
+  // called: numbers passed to a function that is not inlined are boxed (see EXPRESS_IN).
+  const valid = Number.isFinite(vx) && Number.isFinite(vy) && Number.isFinite(wx) && Number.isFinite(wy) &&
+    Number.isFinite(wz) && Number.isFinite(M) && Number.isFinite(R) && Number.isFinite(h) &&
+    Number.isFinite(ee) && Number.isFinite(muS) && Number.isFinite(muW) &&
+    M > 0 && R > 0 && h > R && h < 2 * R && ee >= 0 && ee <= 1 && muS >= 0 && muW >= 0;
+  if (!valid) throwInvalid(vx, vy, wx, wy, wz, M, R, h, ee, muS, muW);
   const tol = options === undefined ? CUSHION_TOLERANCES.accurate : resolveTolerance(options);
   impacted = vy > 0;
   expressCode = 0;
   if (!impacted) return { vx, vy, wx, wy, wz };
-  const n = express ? expressImpact(vx, vy, wx, wy, wz, R, h, ee, muS, muW, tol) : 0;
+  let n = 0;
+  if (express) {
+    const input = EXPRESS_IN;
+    input[0] = vx;
+    input[1] = vy;
+    input[2] = wx;
+    input[3] = wy;
+    input[4] = wz;
+    input[5] = R;
+    input[6] = h;
+    input[7] = ee;
+    input[8] = muS;
+    input[9] = muW;
+    input[10] = tol;
+    n = expressImpact();
+  }
   expressCode = n;
   const e0 = energyOf(vx, vy, wx, wy, wz, R);
   if (n > 0) return leaving(expressResult(R), e0, R);

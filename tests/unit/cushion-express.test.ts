@@ -9,7 +9,7 @@ import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { cushionImpactSolver } from '../../shared/physics/cushion.ts';
 import {
-  compressionEnd, EVENT_DONE, EXPRESS_EVENT, EXPRESS_HANDOVER, EXPRESS_OUT, EXPRESS_SLIP_MIN, expressImpact,
+  compressionEnd, EVENT_DONE, EXPRESS_EVENT, EXPRESS_HANDOVER, EXPRESS_IN, EXPRESS_OUT, EXPRESS_SLIP_MIN, expressImpact,
   restitutionEnd, SERIES_CONSTANTS, seriesConstants,
 } from '../../shared/physics/cushion-express.ts';
 import { CushionModel } from '../../shared/physics/cushion-model.ts';
@@ -38,7 +38,8 @@ function internal(st: CushionState, R: number): Float64Array {
 
 /** Series steps the express path took (0 declined at the start, < 0 handed over later). */
 function expressSteps(st: CushionState, p: CushionParams, tol = 1e-6): number {
-  return expressImpact(st.vx, st.vy, st.wx, st.wy, st.wz, p.R, p.h, p.ee, p.muS, p.muW, tol);
+  EXPRESS_IN.set([st.vx, st.vy, st.wx, st.wy, st.wz, p.R, p.h, p.ee, p.muS, p.muW, tol]);
+  return expressImpact();
 }
 
 /** The express path's result when it ends the impact itself, else null. */
