@@ -56,8 +56,14 @@ w(' * integral of c times the whole series of vy, so that the events\' roots, wh
 w(' * work\'s slope and curvature from vy (cushionSeriesEvent), see one consistent polynomial.');
 w(' */');
 w(`export const SERIES_W_LAST = ${6 * (N + 1) + 1};`);
+w('/**');
+w(' * Where cushionSeriesAt and cushionSeriesEvent take the point p to evaluate at: in the array,');
+w(' * not as an argument, as a number passed to a function that is not inlined is boxed (a heap');
+w(' * allocation; these are called on every step).');
+w(' */');
+w(`export const SERIES_AT = ${6 * (N + 1) + 2};`);
 w('/** The length of a series array. */');
-w(`export const SERIES_LENGTH = ${6 * (N + 1) + 2};`);
+w(`export const SERIES_LENGTH = ${6 * (N + 1) + 3};`);
 w('');
 /**
  * Emits one series function. rolling: the table slip is zero at the start and grows (a ball
@@ -280,8 +286,9 @@ function estrin(coef: (k: number) => string, lo: number, hi: number): string {
   const high = estrin(coef, lo + span, hi);
   return `(${low} + ${high} * p${span})`;
 }
-w('/** The six series of q at p = t into out (Estrin\'s scheme, the six side by side; the work to p^9). */');
-w('export function cushionSeriesAt(q: Float64Array, t: number, out: Float64Array): void {');
+w('/** The six series of q at p = q[SERIES_AT] into out (Estrin\'s scheme, the six side by side; the work to p^9). */');
+w('export function cushionSeriesAt(q: Float64Array, out: Float64Array): void {');
+w(`  const t = q[${6 * (N + 1) + 2}]!;`);
 w('  const p1 = t;');
 w('  const p2 = t * t;');
 w('  const p4 = p2 * p2;');
@@ -293,8 +300,9 @@ w('');
 // The events' evaluation: vy with its slope and the work (the work's slope is c vy and its
 // curvature c dvy/dp, so this gives the roots of both events their Newton and Halley
 // corrections in one pass).
-w('/** vy, dvy/dp and the work W (to p^9) of q at p = t into out[0], out[1], out[2] (Estrin\'s scheme). */');
-w('export function cushionSeriesEvent(q: Float64Array, t: number, out: Float64Array): void {');
+w('/** vy, dvy/dp and the work W (to p^9) of q at p = q[SERIES_AT] into out[0], out[1], out[2] (Estrin\'s scheme). */');
+w('export function cushionSeriesEvent(q: Float64Array, out: Float64Array): void {');
+w(`  const t = q[${6 * (N + 1) + 2}]!;`);
 w('  const p1 = t;');
 w('  const p2 = t * t;');
 w('  const p4 = p2 * p2;');

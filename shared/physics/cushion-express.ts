@@ -110,7 +110,8 @@ export function seriesConstants(k: Float64Array, s: number, c: number, muS: numb
  * (dW/dp = c vy, exactly so on the series with the work's last term, SERIES_W_LAST): from x,
  * W(x) - c vy dx / 2 is W_c to within c |d²vy/dp²| |dx|³ / 6 (tested: within 3e-11 of it,
  * Newton's root itself within about 1e-6 of the step). The end of restitution is Halley's
- * (cubic convergence: to rounding, tested). With e_e = 0 the ball leaves at the end of
+ * (cubic convergence), from the root of the work's quadratic part: within 4e-9 of the step
+ * (tested), which moves the result by as little of V0. With e_e = 0 the ball leaves at the end of
  * compression itself, which Newton's method then locates to ROOT_MOVE (1e-6) of the step, as the
  * solver does (to about 1e-13). On the benchmark grid the roots took 2.1 and 2.0 Newton
  * iterations each, and the work at the first one another evaluation; now 1.07 and 1.19.
@@ -142,7 +143,8 @@ export function compressionEnd(q: Float64Array, dp: number, c: number, done: num
   const ev = EV;
   const eps = done * dp;
   for (let it = 0; it < 60; it++) {
-    cushionSeriesEvent(q, x, ev);
+    q[56] = x; // q[SERIES_AT]
+    cushionSeriesEvent(q, ev);
     const v = ev[0]!;
     const d = ev[1]!;
     if (v > 0) lo = x;
@@ -164,18 +166,21 @@ export function compressionEnd(q: Float64Array, dp: number, c: number, done: num
 }
 
 /**
- * The end of restitution in [lo, hi] (the work above target at lo, at or below it at hi): where
- * W falls to target, by Halley's method (W' = c vy and W'' = c dvy/dp from the same pass; Newton's
- * correction where Halley's would not be defined) kept inside the bracket by bisection, from x0
- * (the root of the work's quadratic part, workStart) or the bracket's middle, until its
- * correction is below EVENT_DONE of the step dp.
+ * The end of restitution in [lo, hi] of a step of length hi (the work above target at lo, at or
+ * below it at hi): where W falls to target, by Halley's method (W' = c vy and W'' = c dvy/dp
+ * from the same pass; Newton's correction where Halley's would not be defined) kept inside the
+ * bracket by bisection, from the root of the work's quadratic part (workStart) or the bracket's
+ * middle, until its correction is below EVENT_DONE of the step.
  */
-export function restitutionEnd(q: Float64Array, target: number, lo: number, hi: number, x0: number, dp: number, c: number): number {
+export function restitutionEnd(q: Float64Array, target: number, lo: number, hi: number, c: number): number {
+  const dp = hi;
   const eps = EVENT_DONE * dp;
   const ev = EV;
+  const x0 = workStart(q, target);
   let x = x0 > lo && x0 < hi ? x0 : 0.5 * (lo + hi);
   for (let it = 0; it < 60; it++) {
-    cushionSeriesEvent(q, x, ev);
+    q[56] = x; // q[SERIES_AT]
+    cushionSeriesEvent(q, ev);
     const f = ev[2]! - target;
     if (f === 0) return x;
     if (f > 0) lo = x;
@@ -361,7 +366,8 @@ export function expressImpact(): number {
       dp = cut;
     }
     let from = 0;
-    cushionSeriesAt(q, dp, end);
+    q[56] = dp; // q[SERIES_AT]
+    cushionSeriesAt(q, end);
     if (!restitution && end[1]! <= 0) {
       from = compressionEnd(q, dp, c, ee2 === 0 ? ROOT_MOVE : EVENT_DONE);
       const wc = EV[2]!;
@@ -371,7 +377,7 @@ export function expressImpact(): number {
     }
     if (restitution) {
       if (end[5]! <= wEnd) {
-        const t = restitutionEnd(q, wEnd, from, dp, workStart(q, wEnd), dp, c);
+        const t = restitutionEnd(q, wEnd, from, dp, c);
         return finish(q, t, e0) ? step : handOver(y, rest0, wEnd0, p, done);
       }
       if (end[1]! >= 0) return handOver(y, rest0, wEnd0, p, done); // vy back at zero: stalled (the solver decides)
@@ -405,7 +411,8 @@ function handOver(from: Float64Array, restitution: boolean, wEnd: number, p: num
 
 /**
  * Where the work's series without its terms above p² falls to target (the work is nearly
- * quadratic in p: its rate c vy is nearly linear), as a start for root; -1 when it does not.
+ * quadratic in p: its rate c vy is nearly linear), as a start for restitutionEnd; -1 when it
+ * does not.
  */
 function workStart(q: Float64Array, target: number): number {
   const a = q[47]!; // the work's first three coefficients (q[9 i + k], i = 5)
@@ -426,6 +433,7 @@ function workStart(q: Float64Array, target: number): number {
  */
 function finish(q: Float64Array, t: number, e0: number): boolean {
   const o = EXPRESS_OUT;
-  cushionSeriesAt(q, t, o);
+  q[56] = t; // q[SERIES_AT]
+  cushionSeriesAt(q, o);
   return o[0]! * o[0]! + o[1]! * o[1]! + 0.4 * (o[2]! * o[2]! + o[3]! * o[3]! + o[4]! * o[4]!) <= e0;
 }

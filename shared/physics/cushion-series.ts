@@ -17,8 +17,14 @@ export const SERIES_CUT = 54;
  * work's slope and curvature from vy (cushionSeriesEvent), see one consistent polynomial.
  */
 export const SERIES_W_LAST = 55;
+/**
+ * Where cushionSeriesAt and cushionSeriesEvent take the point p to evaluate at: in the array,
+ * not as an argument, as a number passed to a function that is not inlined is boxed (a heap
+ * allocation; these are called on every step).
+ */
+export const SERIES_AT = 56;
 /** The length of a series array. */
-export const SERIES_LENGTH = 56;
+export const SERIES_LENGTH = 57;
 
 /**
  * Fills q with the series of y about the state y: variable i's coefficient of p^k at
@@ -580,8 +586,9 @@ export function cushionSeriesRolling(y: Float64Array, q: Float64Array, k: Float6
   return true;
 }
 
-/** The six series of q at p = t into out (Estrin's scheme, the six side by side; the work to p^9). */
-export function cushionSeriesAt(q: Float64Array, t: number, out: Float64Array): void {
+/** The six series of q at p = q[SERIES_AT] into out (Estrin's scheme, the six side by side; the work to p^9). */
+export function cushionSeriesAt(q: Float64Array, out: Float64Array): void {
+  const t = q[56]!;
   const p1 = t;
   const p2 = t * t;
   const p4 = p2 * p2;
@@ -594,8 +601,9 @@ export function cushionSeriesAt(q: Float64Array, t: number, out: Float64Array): 
   out[5] = ((((q[45]! + q[46]! * p1) + (q[47]! + q[48]! * p1) * p2) + ((q[49]! + q[50]! * p1) + (q[51]! + q[52]! * p1) * p2) * p4) + q[53]! * p8) + q[55]! * (p8 * t);
 }
 
-/** vy, dvy/dp and the work W (to p^9) of q at p = t into out[0], out[1], out[2] (Estrin's scheme). */
-export function cushionSeriesEvent(q: Float64Array, t: number, out: Float64Array): void {
+/** vy, dvy/dp and the work W (to p^9) of q at p = q[SERIES_AT] into out[0], out[1], out[2] (Estrin's scheme). */
+export function cushionSeriesEvent(q: Float64Array, out: Float64Array): void {
+  const t = q[56]!;
   const p1 = t;
   const p2 = t * t;
   const p4 = p2 * p2;

@@ -13,7 +13,7 @@ import {
   restitutionEnd, SERIES_CONSTANTS, seriesConstants,
 } from '../../shared/physics/cushion-express.ts';
 import { CushionModel } from '../../shared/physics/cushion-model.ts';
-import { cushionSeries, cushionSeriesAt, SERIES_CUT, SERIES_LENGTH, SERIES_TERMS } from '../../shared/physics/cushion-series.ts';
+import { cushionSeries, cushionSeriesAt, SERIES_AT, SERIES_CUT, SERIES_LENGTH, SERIES_TERMS } from '../../shared/physics/cushion-series.ts';
 import { cushionImpact } from '../../shared/physics/index.ts';
 import type { CushionParams, CushionState } from '../../shared/physics/index.ts';
 import { CUSHION_SERIES_FILE, CUSHION_SERIES_SOURCE } from '../../scripts/gen-cushion-series.ts';
@@ -22,6 +22,12 @@ import { issueImpact } from '../support/cushion-arbitraries.ts';
 import { referenceRebound } from '../support/cushion-reference.ts';
 
 const NT = SERIES_TERMS;
+
+/** The series q at p = t into out. */
+function at(q: Float64Array, t: number, out: Float64Array): void {
+  q[SERIES_AT] = t;
+  cushionSeriesAt(q, out);
+}
 
 /** The series' constants, as expressImpact sets them (no cut: lim 0). */
 function constants(p: CushionParams): { s: number; c: number; k: Float64Array } {
@@ -57,10 +63,11 @@ describe('cushion series', () => {
     expect(readFileSync(CUSHION_SERIES_FILE, 'utf8')).toBe(CUSHION_SERIES_SOURCE);
   });
 
-  it('has the layout the express path reads by literal indices (q[9 i + k], the cut at 54)', () => {
+  it('has the layout the express path reads by literal indices (q[9 i + k], the cut at 54, the point at 56)', () => {
     expect(SERIES_TERMS).toBe(9);
     expect(SERIES_CUT).toBe(54);
-    expect(SERIES_LENGTH).toBe(56);
+    expect(SERIES_AT).toBe(56);
+    expect(SERIES_LENGTH).toBe(57);
   });
 
   it('is the Taylor series of the equations: a fine Runge-Kutta integration of the model lands on it', () => {
@@ -112,7 +119,7 @@ function bisect(q: Float64Array, i: number, target: number, lo: number, hi: numb
   for (let n = 0; n < 200 && hi - lo > 0; n++) {
     const m = 0.5 * (lo + hi);
     if (m === lo || m === hi) break;
-    cushionSeriesAt(q, m, y);
+    at(q, m, y);
     if (y[i]! > target) lo = m;
     else hi = m;
   }
@@ -129,7 +136,7 @@ describe('express path: the ends of the phases on the series', () => {
     let rootC = 0; // Newton's method to EVENT_DONE: the root, relative to the step
     let workC = 0; // the work there, relative
     let rootC0 = 0; // Newton's method to 1e-6 (e_e = 0), relative to the step
-    let rootR = 0; // Halley's method to EVENT_DONE, relative to the span
+    let rootR = 0; // Halley's method to EVENT_DONE, relative to the step
     for (const [, p] of TABLE_PARAMS) {
       const { c, k } = constants(p);
       for (const g of benchGrid(p.R).filter((c, i) => i % 5 === 0 && c.kT !== 1)) {
@@ -137,11 +144,11 @@ describe('express path: the ends of the phases on the series', () => {
         const y = new Float64Array(6);
         if (!cushionSeries(internal(g.state, p.R), q, k)) continue;
         const dp = 1.3 * (-q[NT]! / q[NT + 1]!);
-        cushionSeriesAt(q, dp, y);
+        at(q, dp, y);
         if (!(dp > 0) || !(y[1]! <= 0)) continue;
         compressions++;
         const pc = bisect(q, 1, 0, 0, dp);
-        cushionSeriesAt(q, pc, y);
+        at(q, pc, y);
         const wc = y[5]!;
         rootC = Math.max(rootC, Math.abs(compressionEnd(q, dp, c, EVENT_DONE) - pc) / dp);
         workC = Math.max(workC, Math.abs(EXPRESS_EVENT[2]! - wc) / wc);
@@ -150,7 +157,7 @@ describe('express path: the ends of the phases on the series', () => {
         let falls = true;
         let last = wc;
         for (let j = 1; j <= 50; j++) {
-          cushionSeriesAt(q, pc + ((end - pc) * j) / 50, y);
+          at(q, pc + ((end - pc) * j) / 50, y);
           falls &&= y[5]! < last;
           last = y[5]!;
         }
@@ -158,7 +165,7 @@ describe('express path: the ends of the phases on the series', () => {
         restitutions++;
         const target = 0.5 * (wc + last);
         const pe = bisect(q, 5, target, pc, end);
-        rootR = Math.max(rootR, Math.abs(restitutionEnd(q, target, pc, end, -1, end, c) - pe) / end);
+        rootR = Math.max(rootR, Math.abs(restitutionEnd(q, target, pc, end, c) - pe) / end);
       }
     }
     expect(compressions).toBeGreaterThan(200);
@@ -169,10 +176,12 @@ describe('express path: the ends of the phases on the series', () => {
     // impact.
     expect(rootC).toBeLessThan(1e-5);
     expect(workC).toBeLessThan(1e-9);
-    // Newton's method to 1e-6 of the step and Halley's to 1e-3 of it: to rounding (measured:
-    // 6e-14 and 7e-16).
+    // Newton's method to 1e-6 of the step: to rounding (measured: 6e-14). Halley's to 1e-3 of
+    // it from the root of the work's quadratic part, which is already close: the last correction
+    // is taken without another, within 4e-9 of the step (measured: 3.9e-9; from the bracket's
+    // middle, where the corrections before it are large, 7e-16).
     expect(rootC0).toBeLessThan(1e-12);
-    expect(rootR).toBeLessThan(1e-12);
+    expect(rootR).toBeLessThan(1e-8);
   });
 });
 
