@@ -25,6 +25,9 @@ import {
 
 export { MAX_STEPS } from './cushion-control.ts';
 
+/** How many stalls an impact may re-decide (redecideAtStall): a guard against trading modes. */
+const REDECISIONS = 4;
+
 // Event functions on the continuous extension, signed so that > 0 is before the event.
 const EV_VY = 0;
 const EV_VY_BACK = 1;
@@ -92,6 +95,8 @@ export class CushionSolver implements FastHost {
   /** Steps taken (accepted and rejected) by the last impact. */
   steps = 0;
   rejected = 0;
+  /** Stalls re-decided this impact (redecideAtStall; at most REDECISIONS). */
+  private redecisions = 0;
   /** When set, every accepted step appends samples here. */
   trace: CushionTracePoint[] | null = null;
 
@@ -163,6 +168,7 @@ export class CushionSolver implements FastHost {
     this.slavingRejects = 0;
     this.innerSteps = 0;
     this.rejected = 0;
+    this.redecisions = 0;
     this.outcome = 'restitution';
     this.ee2 = ee * ee;
   }
@@ -347,6 +353,7 @@ export class CushionSolver implements FastHost {
         stop = this.root(EV_STICK, 0, 0, 1);
         leave = true;
       }
+      let vyBack = false;
       let endAt = -1;
       let from = 0;
       const ys = this.ye;
@@ -410,6 +417,7 @@ export class CushionSolver implements FastHost {
           else if (y[1]! >= 0) endAt = 0;
           else endAt = this.root(EV_VY_BACK, 0, 0, stop);
           this.outcome = 'stalled';
+          vyBack = true;
         }
       }
       if (endAt >= 0) {
@@ -418,6 +426,10 @@ export class CushionSolver implements FastHost {
         this.recordTrace(step, endAt);
         copy6(this.ye, y);
         this.p += endAt * step;
+        if (vyBack && this.redecideAtStall()) {
+          this.outcome = 'restitution';
+          continue;
+        }
         if (this.outcome === 'stalled') y[1] = 0;
         return;
       }
@@ -851,6 +863,32 @@ export class CushionSolver implements FastHost {
         m.hintCy = -m.hy / n;
       }
     }
+  }
+
+  /**
+   * vy came back to zero in restitution (a stall) at y with a sliding contact's slip within
+   * 10 event tolerances of zero: that slip is taken as zero and the rolling conditions decide
+   * again (enterZero). True (the integration goes on) when that changes a contact's mode and
+   * the impulse then pushes the ball out, at most REDECISIONS times an impact. With friction a
+   * hair below the both-rolling threshold cos θ / (1 + sin θ), the cushion contact rolling and the
+   * table slip closing on zero with vy, the table slip was left sliding at 4e-7 of the speed, vy
+   * came back to zero and the impact stalled where the reference rebounds slowly (1.7e-2 V0 off;
+   * docs/cushion.md, Limits): taken as zero, the table contact rolls, the cushion contact slips
+   * and the ball leaves.
+   */
+  private redecideAtStall(): boolean {
+    if (this.redecisions >= REDECISIONS) return false;
+    this.redecisions++;
+    const m = this.model;
+    const zI = m.modeI === SLIDE && this.slipNorm(0) <= 10 * this.epsEv;
+    const zC = m.modeC === SLIDE && this.slipNorm(1) <= 10 * this.epsEv;
+    if (!zI && !zC) return false;
+    const modeI = m.modeI;
+    const modeC = m.modeC;
+    if (this.enterZero(zI, zC)) return false;
+    if (m.modeI === modeI && m.modeC === modeC) return false;
+    m.derivative(this.y, this.rk.k1);
+    return this.rk.k1[1]! < 0;
   }
 
   /** Both contacts roll: nothing changes any more, so restitution cannot finish. */

@@ -315,6 +315,24 @@ describe('an impact whose restitution can never reach its target', () => {
     }
   });
 
+  it('vy back at zero in restitution with the table slip a hair from zero: the rolling conditions decide again, and the ball leaves as in the reference', () => {
+    // Cushion friction 0.05-0.2% below the both-rolling threshold cos θ / (1 + sin θ), no spin:
+    // the cushion contact rolls and the table slip closes on zero with vy. It was left sliding at
+    // 4e-7 of the speed, vy came back to zero, and the impact stalled 5e-3 to 5e-2 V0 from the
+    // reference's slow rebound (16 of 12,000 draws near the threshold).
+    const cases: [number, number, number, number, number][] = [
+      // h / R, e_e, μs, μw, incidence (°)
+      [1.6122919867280872, 0.6462997163180262, 0.9607881414704025, 0.4895980169530958, 87],
+      [1.6141485673375429, 0.866636358271353, 1.0494992047548295, 0.48862780219146873, 86.07586593017913],
+      [1.7004319837782533, 0.9876791607122868, 0.9202322002267465, 0.41874873677252095, 84.94881680700928],
+    ];
+    for (const [hR, ee, muS, muW, alpha] of cases) {
+      const k = matchesReference(paperState(1, alpha, 0, 0, R), { M, R, h: hR * R, ee, muS, muW }, 200);
+      expect(k.outcome).toBe('restitution');
+      expect(k.state.vy).toBeLessThan(-1e-3);
+    }
+  });
+
   it('a contact decided rolling is never aimed at zero again (regression: a loop of steps too small to move)', () => {
     // μw 0.5 at the paper's height: both slips reach zero together, the table contact rolls and
     // the cushion contact slips on; a stale slaving flag on the rolling contact made every step
