@@ -738,6 +738,12 @@ export class CushionModel {
     const ux = (ax - mu * b12 * uy) / (lam + mu * b11);
     this.ux = ux;
     this.uy = uy;
-    return ux * ux + uy * uy;
+    const n2 = ux * ux + uy * uy;
+    // At a pole |u| is infinite. Computed, it can come out NaN (b12 = 0 times an infinite uy,
+    // or 0 / 0), which onsetDirection took for "no root above the pole" and returned the pole
+    // as the slaved slip's rate: -0.91 where the slip shrank at -3.5e-4, so that every step was
+    // aimed at a zero 2,600 times nearer than the slip's, until the step cap threw (friction a
+    // hair below the both-rolling threshold, the table contact rolling; a regression test).
+    return n2 === n2 ? n2 : Infinity;
   }
 }

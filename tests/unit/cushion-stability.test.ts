@@ -315,6 +315,23 @@ describe('an impact whose restitution can never reach its target', () => {
     }
   });
 
+  it('a slaved cushion slip along y with the table contact rolling shrinks at its own rate, not at the pole of its direction\'s equation', () => {
+    // Friction 3e-5 to 4e-4 below the both-rolling threshold: the slaved slip's rates are
+    // a + B g with b12 = 0, and the pole of the slaved direction's equation gave NaN (0 times
+    // an infinite u_y), taken for "no root": the slip was said to shrink at -0.91 where it shrank
+    // at -3.5e-4, every step was aimed at a zero 2,600 times nearer than its own, and the step
+    // cap threw (88 of 6,000 draws near the threshold).
+    const cases: [number, number, number, number, number, number, number][] = [
+      // h / R, e_e, μs, μw, incidence (°), topspin k, sidespin k
+      [1.6590209867805241, 0.4746052418136969, 1.0553775248583406, 0.4532224922279454, 87.39343702211045, 0, 0],
+      [1.8619899913668632, 0.6873574970522895, 1.1030285432469098, 0.27225850548322345, 80.82972832373343, 0, 0],
+      [1.3914182542823255, 0.43944079251959917, 0.8504162668483332, 0.6615990768159611, 76.76027192850597, 0.35637546610087156, -0.24471214786171913],
+    ];
+    for (const [hR, ee, muS, muW, alpha, kT, kS] of cases) {
+      matchesReference(paperState(1, alpha, kT, kS, R), { M, R, h: hR * R, ee, muS, muW }, 1000);
+    }
+  });
+
   it('vy back at zero in restitution with the table slip a hair from zero: the rolling conditions decide again, and the ball leaves as in the reference', () => {
     // Cushion friction 0.05-0.2% below the both-rolling threshold cos θ / (1 + sin θ), no spin:
     // the cushion contact rolls and the table slip closes on zero with vy. It was left sliding at
