@@ -465,12 +465,15 @@ export class CushionSolver implements FastHost {
    * that rose back to zero (within the event tolerance) ends the impact stalled, as when vy
    * crosses 0 inside a step. Checked before the rolling conditions decide at a slip zero met at
    * the same instant (with the table contact rolling, the cushion slip along y is
-   * -(1 + sinθ) vy, so it reaches zero exactly with vy): the branch they choose may push the
-   * ball out again, but vy has come back to zero first. True when the impact ended.
+   * -(1 + sinθ) vy, so it reaches zero exactly with vy). Unless a sliding slip is within the
+   * event band of zero there and the rolling conditions, deciding again, choose a branch that
+   * pushes the ball out (redecideAtStall): then the impact goes on, as in the reference. True
+   * when the impact ended.
    */
   private backAtZero(vyStart: number): boolean {
     const vy = this.y[1]!;
     if (!(this.restitution && vy >= -this.epsEv && vy > vyStart)) return false;
+    if (this.redecideAtStall()) return false;
     this.finishStalled();
     return true;
   }
@@ -868,8 +871,9 @@ export class CushionSolver implements FastHost {
   /**
    * vy came back to zero in restitution (a stall) at y with a sliding contact's slip within
    * 10 event tolerances of zero: that slip is taken as zero and the rolling conditions decide
-   * again (enterZero). True (the integration goes on) when that changes a contact's mode and
-   * the impulse then pushes the ball out, at most REDECISIONS times an impact. With friction a
+   * again (enterZero: a contact's mode, or the direction in which a slip leaves zero, may
+   * change). True (the integration goes on) when the impulse then pushes the ball out, at most
+   * REDECISIONS times an impact. With friction a
    * hair below the both-rolling threshold cos θ / (1 + sin θ), the cushion contact rolling and the
    * table slip closing on zero with vy, the table slip was left sliding at 4e-7 of the speed, vy
    * came back to zero and the impact stalled where the reference rebounds slowly (1.7e-2 V0 off;
@@ -883,10 +887,7 @@ export class CushionSolver implements FastHost {
     const zI = m.modeI === SLIDE && this.slipNorm(0) <= 10 * this.epsEv;
     const zC = m.modeC === SLIDE && this.slipNorm(1) <= 10 * this.epsEv;
     if (!zI && !zC) return false;
-    const modeI = m.modeI;
-    const modeC = m.modeC;
     if (this.enterZero(zI, zC)) return false;
-    if (m.modeI === modeI && m.modeC === modeC) return false;
     m.derivative(this.y, this.rk.k1);
     return this.rk.k1[1]! < 0;
   }
