@@ -873,12 +873,10 @@ export class CushionSolver implements FastHost {
    * 10 event tolerances of zero: that slip is taken as zero and the rolling conditions decide
    * again (enterZero: a contact's mode, or the direction in which a slip leaves zero, may
    * change). True (the integration goes on) when the impulse then pushes the ball out, at most
-   * REDECISIONS times an impact. With friction a
-   * hair below the both-rolling threshold cos θ / (1 + sin θ), the cushion contact rolling and the
-   * table slip closing on zero with vy, the table slip was left sliding at 4e-7 of the speed, vy
-   * came back to zero and the impact stalled where the reference rebounds slowly (1.7e-2 V0 off;
-   * docs/cushion.md, Limits): taken as zero, the table contact rolls, the cushion contact slips
-   * and the ball leaves.
+   * REDECISIONS times an impact. With friction a hair below the both-rolling threshold
+   * cos θ / (1 + sin θ), a slip closing on zero together with vy was left sliding at 1e-7 to
+   * 4e-7 of the speed, vy came back to zero and the impact stalled where the reference rebounds
+   * slowly (up to 5.9e-2 V0 off; docs/cushion.md, Limits); decided at that zero, the ball leaves.
    */
   private redecideAtStall(): boolean {
     if (this.redecisions >= REDECISIONS) return false;
