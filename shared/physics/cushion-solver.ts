@@ -233,7 +233,9 @@ export class CushionSolver implements FastHost {
         // vy is back at zero (within the event tolerance) and the impulse no longer pushes the
         // ball out: the work has reached its maximum (outcome 'stalled', as when vy crosses 0
         // inside a step). Checked at a step's start too: with friction near 1 the contacts can
-        // trade sticking there in steps too short to move.
+        // trade sticking there in steps too short to move. Unless a sliding slip is near zero
+        // and the rolling conditions, deciding again, push the ball out (redecideAtStall).
+        if (this.redecideAtStall()) continue;
         this.finishStalled();
         return;
       }
