@@ -368,6 +368,21 @@ describe('an impact whose restitution can never reach its target', () => {
     }
   });
 
+  it('vy within the event tolerance of zero at a step\'s start in restitution, both slips a hair from zero: the rolling conditions decide again there too', () => {
+    // Draws near the both-rolling threshold that stalled at a step's start (1.75e-2 V0 off), and
+    // one that did so once solved again as a slow rebound (1.10e-2 V0 off).
+    const cases: [number, number, number, number, number, number, number][] = [
+      // h / R, e_e, μs, μw, incidence (°), topspin k, sidespin k
+      [1.8175504868850112, 0.37646371335722506, 1.0277235160348936, 0.31435817134585314, 87.31451284023933, -0.5964774712920189, 0.026756049133837223],
+      [1.7965903766918927, 0.4409796231193468, 0.9724203117191792, 0.33579065146264725, 86.49672050960362, -0.7003643256612122, 0.8167714481242001],
+    ];
+    for (const [hR, ee, muS, muW, alpha, kT, kS] of cases) {
+      const k = matchesReference(paperState(1, alpha, kT, kS, R), { M, R, h: hR * R, ee, muS, muW }, 400);
+      expect(k.outcome).toBe('restitution');
+      expect(k.state.vy).toBeLessThan(-1e-3);
+    }
+  });
+
   it('a ball that leaves at a small fraction of e_e vy0 after a long restitution is solved again at a finer tolerance, and matches the reference', () => {
     // μw 0.19% above the both-rolling threshold: vy leaves at 0.4% of e_e vy0, where an error in
     // the work moves the end by hundreds of times more than the work's error weight assumes; at
