@@ -880,8 +880,8 @@ export class CushionSolver implements FastHost {
 
   /**
    * vy came back to zero in restitution (a stall) at y with a sliding contact's slip within
-   * STALL_ZERO event tolerances of zero: that slip is taken as zero and the rolling conditions decide
-   * again (enterZero: a contact's mode, or the direction in which a slip leaves zero, may
+   * STALL_ZERO event tolerances of zero: that slip is taken as zero and the rolling conditions
+   * decide again (enterZero: a contact's mode, or the direction in which a slip leaves zero, may
    * change). True (the integration goes on) when the impulse then pushes the ball out, at most
    * REDECISIONS times an impact. With friction a hair below the both-rolling threshold
    * cos θ / (1 + sin θ), a slip closing on zero together with vy was left sliding at 1e-7 to
