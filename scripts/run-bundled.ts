@@ -2,7 +2,7 @@
 // code: no per-module loader in the way of what a benchmark measures.
 //   node --import tsx scripts/run-bundled.ts bench/sim.ts [args...]
 import { build } from 'esbuild';
-import { mkdtempSync } from 'node:fs';
+import { mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
@@ -12,7 +12,10 @@ if (!entry) {
   console.error('usage: run-bundled.ts <entry.ts> [args...]');
   process.exit(2);
 }
-const outfile = join(mkdtempSync(join(tmpdir(), 'baize-bundle-')), 'main.mjs');
+const dir = mkdtempSync(join(tmpdir(), 'baize-bundle-'));
+const outfile = join(dir, 'main.mjs');
+// The bundle is removed when the process exits (a killed run can still leave it behind).
+process.on('exit', () => rmSync(dir, { recursive: true, force: true }));
 await build({
   entryPoints: [resolve(entry)],
   outfile,
