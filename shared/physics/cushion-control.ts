@@ -79,6 +79,29 @@ export function errorMemory(err: number): number {
   return Math.sqrt(Math.sqrt(Math.sqrt(Math.sqrt(err > 1e-4 ? err : 1e-4))));
 }
 
+/**
+ * The factor on the next step's size for slips closing on zero: a sliding slip r shrinking at
+ * rate (per unit impulse) is d = r / -rate from its predicted zero, at a step's start (d0) and
+ * end (d1). Near the zero its direction turns ever faster (the solution is not smooth there), so
+ * a step that the error allows covers about a fixed fraction of the distance left, not a fixed
+ * impulse: the PI control, which proposes the next step from the last one's size, then proposes
+ * about the whole distance, the step aimed at the zero is rejected, and so on at every step of
+ * the approach (half of the attempts on the 75-89.5° impacts without spin). The proposal is
+ * scaled by d1 / d0 (the step control then works on the fraction of the distance), the smaller
+ * of the two contacts', within [0.2, 1]; 1 when neither slip closes on zero over the step.
+ */
+export function approachFactor(d0I: number, d1I: number, d0C: number, d1C: number): number {
+  let f = 1;
+  if (d1I < d0I) f = d1I / d0I;
+  if (d1C < d0C && d1C / d0C < f) f = d1C / d0C;
+  return f < 0.2 ? 0.2 : f;
+}
+
+/** Distance in impulse to the zero of a slip r changing along itself at rate; Infinity if it grows. */
+export function zeroDistance(r: number, rate: number): number {
+  return rate < 0 ? -r / rate : Infinity;
+}
+
 /** The memory before any accepted step (an error of 1). */
 export const FIRST_MEMORY = 1;
 

@@ -14,7 +14,8 @@
 // or rejected) a call of fastStep, its state carried in S (see runFast for why).
 // Equations: cushion-model.ts (Mathavan et al. 2010, eq. 14 with both contacts slipping).
 import {
-  errorMemory, invRoot, MAX_STEPS, nextStep, QS_EXIT, QS_GROW, QS_RHO, RELAX_MAX, TURN_MAX,
+  approachFactor, errorMemory, invRoot, MAX_STEPS, nextStep, QS_EXIT, QS_GROW, QS_RHO, RELAX_MAX, TURN_MAX,
+  zeroDistance,
 } from './cushion-control.ts';
 import type { CushionModel } from './cushion-model.ts';
 import {
@@ -58,6 +59,8 @@ export interface FastHost {
   errPrev: number;
   /** After FAST_SETTLE: the accepted step's error and the slip speeds at its start. */
   lastErr: number;
+  /** After FAST_SETTLE: the factor on the next step for slips closing on zero (approachFactor). */
+  lastApproach: number;
   rI0: number;
   rC0: number;
   /** After FAST_SETTLE: vy at the accepted step's start. */
@@ -262,6 +265,8 @@ export function fastStep(
     const rIy = eIy / r;
     let h = step;
     let rate = (eIx * aIx + eIy * aIy) / r;
+    const dI0 = zeroDistance(r, rate);
+    let dC0 = Infinity;
     if (rate < 0 && r <= -rate * h) h = -r / rate;
     let turn = Math.abs(aIx * eIy - aIy * eIx) / r;
     if (turn * h > TURN_MAX * r) h = TURN_MAX * r / turn;
@@ -302,6 +307,7 @@ export function fastStep(
       rCx = eCx / rc;
       rCy = eCy / rc;
       rate = (eCx * aCx + eCy * aCy) / rc;
+      dC0 = zeroDistance(rc, rate);
       if (rate < 0 && rc <= -rate * h) h = -rc / rate;
       turn = Math.abs(aCx * eCy - aCy * eCx) / rc;
       if (turn * h > TURN_MAX * rc) h = TURN_MAX * rc / turn;
@@ -821,6 +827,9 @@ export function fastStep(
     const rI0 = r;
     const rC0 = rc;
     const vyStart = y1;
+    // (The slips' distances to zero at the step's end, from the rates there: approachFactor.)
+    const approach = approachFactor(dI0, zeroDistance(rN, (xIx * gIx + xIy * gIy) / rN), dC0,
+      slavC ? Infinity : zeroDistance(rcN, (xCx * gCx + xCy * gCy) / rcN));
     y0 = x0;
     y1 = x1;
     y2 = x2;
@@ -849,6 +858,7 @@ export function fastStep(
       m.minDotI = mdI;
       m.minDotC = mdC;
       host.lastErr = err;
+      host.lastApproach = approach;
       host.rI0 = rI0;
       host.rC0 = rC0;
       host.vy0 = vyStart;
@@ -856,7 +866,7 @@ export function fastStep(
       code = FAST_SETTLE;
       break attempt;
     }
-    step = nextStep(h, err, errPrev);
+    step = nextStep(h, err, errPrev) * approach;
     errPrev = errorMemory(err);
     code = FAST_AGAIN;
   }

@@ -18,9 +18,9 @@ import type { FastHost } from './cushion-fast.ts';
 import { CushionModel, SLIDE, STICK } from './cushion-model.ts';
 import type { CushionOutcome } from './cushion-types.ts';
 import {
-  errorMemory, EVENT_FRACTION, FIRST_MEMORY, HINT_FRACTION, invRoot, MAX_STEPS, nextStep, PIN_FRACTION, QS_EXIT, QS_FRACTION, QS_GROW, QS_HOLD_RHO, QS_RHO, RELAX_MAX,
-  TURN_MAX,
-  ZERO_FRACTION,
+  approachFactor, errorMemory, EVENT_FRACTION, FIRST_MEMORY, HINT_FRACTION, invRoot, MAX_STEPS, nextStep,
+  PIN_FRACTION, QS_EXIT, QS_FRACTION, QS_GROW, QS_HOLD_RHO, QS_RHO, RELAX_MAX, TURN_MAX, ZERO_FRACTION,
+  zeroDistance,
 } from './cushion-control.ts';
 
 export { MAX_STEPS } from './cushion-control.ts';
@@ -82,6 +82,7 @@ export class CushionSolver implements FastHost {
   step = -0;
   errPrev = -0;
   lastErr = -0;
+  lastApproach = 1;
   rI0 = -0;
   rC0 = -0;
   vy0 = -0;
@@ -224,7 +225,7 @@ export class CushionSolver implements FastHost {
         if (code === FAST_SETTLE) {
           if (this.backAtZero(this.vy0)) return;
           if (this.settleSlips(this.rI0, this.rC0, tolV)) return;
-          step = nextStep(step, this.lastErr, errPrev);
+          step = nextStep(step, this.lastErr, errPrev) * this.lastApproach;
           errPrev = errorMemory(this.lastErr);
           continue;
         }
@@ -460,12 +461,15 @@ export class CushionSolver implements FastHost {
       const rI0 = model.modeI === SLIDE ? this.slipNorm(0) : 0;
       const vyStart = y[1]!;
       const rC0 = model.modeC === SLIDE ? this.slipNorm(1) : 0;
+      const dI0 = this.zeroDistanceOf(0);
+      const dC0 = this.zeroDistanceOf(1);
       copy6(rk.y1, y);
       rk.swap();
       this.p += step;
+      const approach = approachFactor(dI0, this.zeroDistanceOf(0), dC0, this.zeroDistanceOf(1));
       if (this.backAtZero(vyStart)) return;
       if (this.settleSlips(rI0, rC0, tolV)) return;
-      step = nextStep(step, err, errPrev);
+      step = nextStep(step, err, errPrev) * approach;
       errPrev = errorMemory(err);
     }
   }
@@ -813,6 +817,25 @@ export class CushionSolver implements FastHost {
     if (turn * step > TURN_MAX * r) step = TURN_MAX * r / turn;
     if (relax * step > RELAX_MAX * r) step = RELAX_MAX * r / relax;
     return step;
+  }
+
+  /**
+   * The distance in impulse to the zero of contact 0's (I) or 1's (C) slip at the current state
+   * and rates (rk.k1), when it slides on its own direction (not slaved) above the event band and
+   * shrinks; Infinity otherwise (approachFactor).
+   */
+  private zeroDistanceOf(contact: number): number {
+    const m = this.model;
+    if (contact === 0 ? m.modeI !== SLIDE || m.qsI : m.modeC !== SLIDE || m.qsC) return Infinity;
+    const y = this.y;
+    const k = this.rk.k1;
+    const ex = contact === 0 ? m.slipIx(y) : m.slipCx(y);
+    const ey = contact === 0 ? m.slipIy(y) : m.slipCy(y);
+    const r = Math.sqrt(ex * ex + ey * ey);
+    if (!(r > m.epsSlip)) return Infinity;
+    const rx = contact === 0 ? m.rateIx(k) : m.rateCx(k);
+    const ry = contact === 0 ? m.rateIy(k) : m.rateCy(k);
+    return zeroDistance(r, (ex * rx + ey * ry) / r);
   }
 
   /** |effective slip| of contact 0 (I) or 1 (C) at the current state. */
