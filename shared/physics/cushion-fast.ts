@@ -61,6 +61,8 @@ export interface FastHost {
   lastErr: number;
   /** After FAST_SETTLE: the factor on the next step for slips closing on zero (approachFactor). */
   lastApproach: number;
+  /** The last step proposed away from every slip's zero (CushionSolver.stepFree). */
+  stepFree: number;
   rI0: number;
   rC0: number;
   /** After FAST_SETTLE: vy at the accepted step's start. */
@@ -74,10 +76,11 @@ export interface FastHost {
 // The continuous extension of a step (5 coefficients per variable, cushion-dense.ts).
 const Q = new Float64Array(30);
 // What fastStep carries from one step to the next: the slips and their rates (0-9), the step
-// control and counts (10-14), restitution (15), the work's target (16), C slaved (17) and
-// slaving rejections in a row (18); and the constants of a run of the inner loop (32-60,
-// fastBegin). (One array, passed to fastStep as an argument: read from the module's scope,
-// every element's load re-checked the array, 20% slower; two arrays, 4% slower than one.)
+// control and counts (10-14), restitution (15), the work's target (16), C slaved (17),
+// slaving rejections in a row (18) and the step proposed away from the zeros (19); and the
+// constants of a run of the inner loop (32-60, fastBegin). (One array, passed to fastStep as an
+// argument: read from the module's scope, every element's load re-checked the array, 20%
+// slower; two arrays, 4% slower than one.)
 const S = new Float64Array(61);
 
 /** Fills S for a run of fastStep from the host, the state y and its derivative k1. */
@@ -155,6 +158,7 @@ function fastBegin(host: FastHost, y: Float64Array, k1: Float64Array): void {
   S[16] = host.wEnd;
   S[17] = m.qsC ? 1 : 0;
   S[18] = 0;
+  S[19] = host.stepFree;
 }
 
 /**
@@ -179,6 +183,7 @@ export function runFast(host: FastHost, y: Float64Array, k1: Float64Array): numb
   host.p = S[14]!;
   host.restitution = S[15] !== 0;
   host.wEnd = S[16]!;
+  host.stepFree = S[19]!;
   return code;
 }
 
@@ -867,6 +872,7 @@ export function fastStep(
       break attempt;
     }
     step = nextStep(h, err, errPrev) * approach;
+    if (approach === 1 && !slavC) st[19] = step; // (both slips are above QS_RHO V here)
     errPrev = errorMemory(err);
     code = FAST_AGAIN;
   }

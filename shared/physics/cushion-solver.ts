@@ -19,7 +19,8 @@ import { CushionModel, SLIDE, STICK } from './cushion-model.ts';
 import type { CushionOutcome } from './cushion-types.ts';
 import {
   approachFactor, errorMemory, EVENT_FRACTION, FIRST_MEMORY, HINT_FRACTION, invRoot, MAX_STEPS, nextStep,
-  PIN_FRACTION, QS_EXIT, QS_FRACTION, QS_GROW, QS_HOLD_RHO, QS_RHO, RELAX_MAX, TURN_MAX, ZERO_FRACTION,
+  PIN_FRACTION, QS_EXIT, QS_FRACTION, QS_GROW, QS_HOLD_RHO, QS_RHO, RELAX_MAX, RESTART_FRACTION, TURN_MAX,
+  ZERO_FRACTION,
   zeroDistance,
 } from './cushion-control.ts';
 
@@ -83,6 +84,13 @@ export class CushionSolver implements FastHost {
   errPrev = -0;
   lastErr = -0;
   lastApproach = 1;
+  /**
+   * The last step proposed away from every slip's zero (approachFactor 1, every sliding slip above
+   * QS_RHO of the speed): where a step restarts after a contact starts to roll (restartAfterStick).
+   */
+  stepFree = 1.5;
+  /** Set by enterZero when a sliding contact starts to roll. */
+  private stuck = false;
   rI0 = -0;
   rC0 = -0;
   vy0 = -0;
@@ -206,6 +214,8 @@ export class CushionSolver implements FastHost {
     this.recordTrace(0, 0);
 
     let step = 0.25 * vy0 / c;
+    this.stepFree = step;
+    this.stuck = false;
     let errPrev = FIRST_MEMORY;
     for (;;) {
       if (this.fastLoop && this.trace === null && (model.qsI || model.qsC) && model.modeI === SLIDE &&
@@ -225,7 +235,7 @@ export class CushionSolver implements FastHost {
         if (code === FAST_SETTLE) {
           if (this.backAtZero(this.vy0)) return;
           if (this.settleSlips(this.rI0, this.rC0, tolV)) return;
-          step = nextStep(step, this.lastErr, errPrev) * this.lastApproach;
+          step = this.restartAfterStick(nextStep(step, this.lastErr, errPrev) * this.lastApproach);
           errPrev = errorMemory(this.lastErr);
           continue;
         }
@@ -255,6 +265,7 @@ export class CushionSolver implements FastHost {
             return;
           }
           model.derivative(y, rk.k1);
+          step = this.restartAfterStick(step);
           continue;
         }
         if (d < step) step = d;
@@ -470,6 +481,8 @@ export class CushionSolver implements FastHost {
       if (this.backAtZero(vyStart)) return;
       if (this.settleSlips(rI0, rC0, tolV)) return;
       step = nextStep(step, err, errPrev) * approach;
+      if (approach === 1 && this.slipsClear()) this.stepFree = step;
+      step = this.restartAfterStick(step);
       errPrev = errorMemory(err);
     }
   }
@@ -855,6 +868,17 @@ export class CushionSolver implements FastHost {
   private enterZero(zI: boolean, zC: boolean): boolean {
     const m = this.model;
     const y = this.y;
+    const slideI = m.modeI === SLIDE;
+    const slideC = m.modeC === SLIDE;
+    const both = this.decideZero(zI, zC);
+    if ((slideI && m.modeI === STICK) || (slideC && m.modeC === STICK)) this.stuck = true;
+    return both;
+  }
+
+  /** enterZero's decision (the rolling conditions at the zero). */
+  private decideZero(zI: boolean, zC: boolean): boolean {
+    const m = this.model;
+    const y = this.y;
     if (zI) {
       m.offIx = y[0]! + m.s * y[3]! - m.c * y[4]!;
       m.offIy = -m.s * y[1]! + y[2]!;
@@ -869,6 +893,30 @@ export class CushionSolver implements FastHost {
     if (zC) m.onsetC(y);
     else m.onsetI(y);
     return false;
+  }
+
+  /**
+   * The step after a sliding contact started to roll (enterZero set stuck): at least
+   * RESTART_FRACTION of stepFree.
+   * The approach to the zero shrank the steps to a fraction of the distance left, down to the
+   * event tolerance; the rolling branch after it is smooth, and growing back from there by the
+   * step control's factor of at most 5 a step took 4-8 steps on the near head-on impacts without
+   * spin. The error test cuts a restart that is too long (by up to 5 a rejection).
+   */
+  private restartAfterStick(step: number): number {
+    if (!this.stuck) return step;
+    this.stuck = false;
+    const restart = RESTART_FRACTION * this.stepFree;
+    return step < restart ? restart : step;
+  }
+
+  /** Whether every sliding contact follows its own direction with a slip above QS_RHO of the speed. */
+  private slipsClear(): boolean {
+    const m = this.model;
+    const lim = QS_RHO * this.V;
+    if (m.modeI === SLIDE && (m.qsI || !(this.slipNorm(0) > lim))) return false;
+    if (m.modeC === SLIDE && (m.qsC || !(this.slipNorm(1) > lim))) return false;
+    return true;
   }
 
   /** The stuck contact needs more than its friction cone: it starts to slip. */
