@@ -270,7 +270,7 @@ export function fastStep(
     const rIy = eIy / r;
     let h = step;
     let rate = (eIx * aIx + eIy * aIy) / r;
-    const dI0 = zeroDistance(r, rate);
+    const dI0 = nmuW < 0 ? zeroDistance(r, rate) : Infinity; // (without friction its direction does not matter)
     let dC0 = Infinity;
     if (rate < 0 && r <= -rate * h) h = -r / rate;
     let turn = Math.abs(aIx * eIy - aIy * eIx) / r;
@@ -312,7 +312,7 @@ export function fastStep(
       rCx = eCx / rc;
       rCy = eCy / rc;
       rate = (eCx * aCx + eCy * aCy) / rc;
-      dC0 = zeroDistance(rc, rate);
+      if (muS > 0) dC0 = zeroDistance(rc, rate);
       if (rate < 0 && rc <= -rate * h) h = -rc / rate;
       turn = Math.abs(aCx * eCy - aCy * eCx) / rc;
       if (turn * h > TURN_MAX * rc) h = TURN_MAX * rc / turn;
@@ -833,8 +833,8 @@ export function fastStep(
     const rC0 = rc;
     const vyStart = y1;
     // (The slips' distances to zero at the step's end, from the rates there: approachFactor.)
-    const approach = approachFactor(dI0, zeroDistance(rN, (xIx * gIx + xIy * gIy) / rN), dC0,
-      slavC ? Infinity : zeroDistance(rcN, (xCx * gCx + xCy * gCy) / rcN));
+    const approach = approachFactor(dI0, nmuW < 0 ? zeroDistance(rN, (xIx * gIx + xIy * gIy) / rN) : Infinity, dC0,
+      slavC || !(muS > 0) ? Infinity : zeroDistance(rcN, (xCx * gCx + xCy * gCy) / rcN));
     y0 = x0;
     y1 = x1;
     y2 = x2;

@@ -86,10 +86,11 @@ export class CushionSolver implements FastHost {
   lastApproach = 1;
   /**
    * The last step proposed away from every slip's zero (approachFactor 1, every sliding slip above
-   * QS_RHO of the speed): where a step restarts after a contact starts to roll (restartAfterStick).
+   * QS_RHO of the speed): where a step restarts after a contact starts to roll (afterZero).
    */
   stepFree = 1.5;
-  /** Set by enterZero when a sliding contact starts to roll. */
+  /** Set by enterZero: a slip reached zero (zeroed), and a sliding contact started to roll (stuck). */
+  private zeroed = false;
   private stuck = false;
   rI0 = -0;
   rC0 = -0;
@@ -215,6 +216,7 @@ export class CushionSolver implements FastHost {
 
     let step = 0.25 * vy0 / c;
     this.stepFree = step;
+    this.zeroed = false;
     this.stuck = false;
     let errPrev = FIRST_MEMORY;
     for (;;) {
@@ -235,7 +237,7 @@ export class CushionSolver implements FastHost {
         if (code === FAST_SETTLE) {
           if (this.backAtZero(this.vy0)) return;
           if (this.settleSlips(this.rI0, this.rC0, tolV)) return;
-          step = this.restartAfterStick(nextStep(step, this.lastErr, errPrev) * this.lastApproach);
+          step = this.afterZero(nextStep(step, this.lastErr, errPrev), this.lastApproach);
           errPrev = errorMemory(this.lastErr);
           continue;
         }
@@ -265,7 +267,7 @@ export class CushionSolver implements FastHost {
             return;
           }
           model.derivative(y, rk.k1);
-          step = this.restartAfterStick(step);
+          step = this.afterZero(step, 1);
           continue;
         }
         if (d < step) step = d;
@@ -480,9 +482,9 @@ export class CushionSolver implements FastHost {
       const approach = approachFactor(dI0, this.zeroDistanceOf(0), dC0, this.zeroDistanceOf(1));
       if (this.backAtZero(vyStart)) return;
       if (this.settleSlips(rI0, rC0, tolV)) return;
-      step = nextStep(step, err, errPrev) * approach;
-      if (approach === 1 && this.slipsClear()) this.stepFree = step;
-      step = this.restartAfterStick(step);
+      step = nextStep(step, err, errPrev);
+      if (approach === 1 && !this.zeroed && this.slipsClear()) this.stepFree = step;
+      step = this.afterZero(step, approach);
       errPrev = errorMemory(err);
     }
   }
@@ -834,12 +836,14 @@ export class CushionSolver implements FastHost {
 
   /**
    * The distance in impulse to the zero of contact 0's (I) or 1's (C) slip at the current state
-   * and rates (rk.k1), when it slides on its own direction (not slaved) above the event band and
-   * shrinks; Infinity otherwise (approachFactor).
+   * and rates (rk.k1), when it slides on its own direction (not slaved) above the event band with
+   * friction, and shrinks; Infinity otherwise (approachFactor).
    */
   private zeroDistanceOf(contact: number): number {
     const m = this.model;
     if (contact === 0 ? m.modeI !== SLIDE || m.qsI : m.modeC !== SLIDE || m.qsC) return Infinity;
+    // Without friction at the contact, its slip's direction does not matter.
+    if (!((contact === 0 ? m.muW : m.muS) > 0)) return Infinity;
     const y = this.y;
     const k = this.rk.k1;
     const ex = contact === 0 ? m.slipIx(y) : m.slipCx(y);
@@ -871,6 +875,7 @@ export class CushionSolver implements FastHost {
     const slideI = m.modeI === SLIDE;
     const slideC = m.modeC === SLIDE;
     const both = this.decideZero(zI, zC);
+    this.zeroed = true;
     if ((slideI && m.modeI === STICK) || (slideC && m.modeC === STICK)) this.stuck = true;
     return both;
   }
@@ -896,18 +901,22 @@ export class CushionSolver implements FastHost {
   }
 
   /**
-   * The step after a sliding contact started to roll (enterZero set stuck): at least
+   * The next step from the step control's proposal and the approach factor of the step just
+   * taken (approachFactor): scaled by it, unless a slip has reached its zero since (enterZero),
+   * which ends its approach. After a sliding contact started to roll there (stuck), at least
    * RESTART_FRACTION of stepFree.
    * The approach to the zero shrank the steps to a fraction of the distance left, down to the
    * event tolerance; the rolling branch after it is smooth, and growing back from there by the
    * step control's factor of at most 5 a step took 4-8 steps on the near head-on impacts without
    * spin. The error test cuts a restart that is too long (by up to 5 a rejection).
    */
-  private restartAfterStick(step: number): number {
-    if (!this.stuck) return step;
+  private afterZero(proposal: number, approach: number): number {
+    if (!this.zeroed) return proposal * approach;
+    this.zeroed = false;
+    if (!this.stuck) return proposal; // (a slip left its zero: a new start, not an approach)
     this.stuck = false;
     const restart = RESTART_FRACTION * this.stepFree;
-    return step < restart ? restart : step;
+    return proposal < restart ? restart : proposal;
   }
 
   /** Whether every sliding contact follows its own direction with a slip above QS_RHO of the speed. */
