@@ -382,6 +382,25 @@ describe('an impact whose restitution can never reach its target', () => {
     for (const c of cases) reboundsAsReference(c, 400);
   });
 
+  it('a hair above the both-rolling threshold the impact stalls, and the reference\'s slow rebound shrinks with its step toward that stall', () => {
+    // μw 1e-6 above cos θ / (1 + sin θ): both contacts end rolling with vy = 0. The reference
+    // at its default 4,000 steps rebounded at -1.74e-4 V0 (1.7e-4 from the kernel, once taken
+    // for the kernel's error); its rebound halves with each halving of its step (-1.1e-5 at
+    // 64,000 steps, 'stalled' at 8,000 and 32,000).
+    const R0 = 0.028;
+    const s = 0.34;
+    const c = Math.sqrt(1 - s * s);
+    const params = { M: 0.17, R: R0, h: (1 + s) * R0, ee: 0.3, muS: 1, muW: (c / (1 + s)) * (1 + 1e-6) };
+    const state = paperState(1, 85, 0, 0, R0);
+    const k = cushionImpact(state, params);
+    expect(k.outcome).toBe('stalled');
+    expect(k.state.vy).toBe(0);
+    const coarse = referenceRebound(state, params, 2000).state.vy;
+    const fine = referenceRebound(state, params, 4000).state.vy;
+    expect(coarse).toBeLessThan(0);
+    expect(Math.abs(fine / coarse - 0.5)).toBeLessThan(0.01);
+  });
+
   it('a ball that leaves at a small fraction of e_e vy0 after a long restitution is solved again at a finer tolerance, and matches the reference', () => {
     // μw 0.19% above the both-rolling threshold: vy leaves at 0.4% of e_e vy0, where an error in
     // the work moves the end by hundreds of times more than the work's error weight assumes; at
