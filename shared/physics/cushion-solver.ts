@@ -871,7 +871,6 @@ export class CushionSolver implements FastHost {
    */
   private enterZero(zI: boolean, zC: boolean): boolean {
     const m = this.model;
-    const y = this.y;
     const slideI = m.modeI === SLIDE;
     const slideC = m.modeC === SLIDE;
     const both = this.decideZero(zI, zC);
