@@ -1,5 +1,6 @@
 // Impacts defined once, shared by the cushion tests, the benchmark and the figures.
 import { cushionParamsOf, tableSpec } from '../../shared/physics/index.ts';
+import { generator } from '../../shared/scenes/index.ts';
 import type { CushionParams, CushionState, TableName } from '../../shared/physics/index.ts';
 
 /** Mathavan et al. 2010's constants (snooker): M, R, h = 7R/5, e_e, μ_s (table), μ_w (cushion). */
@@ -65,6 +66,26 @@ export function benchGrid(R: number): GridCase[] {
         for (const kS of BENCH_SIDESPINS) out.push({ V0, alpha, kT, kS, state: paperState(V0, alpha, kT, kS, R) });
       }
     }
+  }
+  return out;
+}
+
+/**
+ * `count` impacts drawn uniformly over the issue's range (V0 0.05-5 m/s, α 0.5-89.5°, k_T
+ * -1..2, k_S -2..2) from `seed` (mulberry32, the same draws everywhere). The grid's spins are
+ * a few round values; here they are anything in the range, so a slip can start anywhere near
+ * zero (a ball with a little less than natural roll, whose table slip then passes zero during
+ * the impact): the benchmark's second set, for what a typical impact costs.
+ */
+export function benchRandom(R: number, count = 528, seed = 2026): GridCase[] {
+  const next = generator(seed);
+  const out: GridCase[] = [];
+  for (let i = 0; i < count; i++) {
+    const V0 = 0.05 + 4.95 * next();
+    const alpha = 0.5 + 89 * next();
+    const kT = -1 + 3 * next();
+    const kS = -2 + 4 * next();
+    out.push({ V0, alpha, kT, kS, state: paperState(V0, alpha, kT, kS, R) });
   }
   return out;
 }
