@@ -281,15 +281,18 @@ export function expressImpact(): number {
   // The step is measured in L = vy / c (the frictionless compression's impulse), so that the
   // series' last two terms, each made relative to it (a_k L^k), compare alike however fast the
   // ball (the model is homogeneous in the speeds, and so is every decision here). No step is
-  // longer than the whole frictionless impact, 2L: with little friction the last terms are tiny
-  // and say nothing of the impact's length.
+  // longer than 3L, half again the whole frictionless impact (2L): with little friction the
+  // last terms are tiny and say nothing of the impact's length. A ball rolling on the cloth into
+  // the cushion at a shallow angle rebounds after about 2.2L (its table slip, growing from zero,
+  // pulls vy back less than c per unit impulse): at 2L those impacts took a second step for the
+  // last tenth (5-35°, natural roll: the grid's mean 6.74 steps, 6.64 now, errors unchanged).
   const L = vy / c;
   const L2 = L * L;
   const L4 = L2 * L2;
   const w6 = L4 * L2;
   const w7 = w6 * L;
   const w8 = L4 * L4;
-  const hMax = 2 * L;
+  const hMax = 3 * L;
   const ee2 = ee * ee;
   // Twice the kinetic and rotational energy per unit mass (I = 2/5 M R²).
   const e0 = vx * vx + vy * vy + 0.4 * (ox * ox + oy * oy + oz * oz);
