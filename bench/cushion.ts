@@ -1,7 +1,8 @@
 // npm run bench:cushion — speed against error of the cushion kernel at each tolerance and of
 // the anchors' scheme (bench/cushion-anchor.ts), timed side by side in one run on the same
 // impacts, paper constants: the grid of 528 (tests/support/cushion-cases.ts, benchGrid), then
-// 528 random draws over the issue's range (benchRandom). Errors are against the converged
+// 528 random draws over the issue's range (benchRandom), then 528 balls rolling into the cushion
+// with a little sidespin (benchRolling, the commonest hit in play). Errors are against the converged
 // reference (tests/support/cushion-reference.ts), as a fraction of V0, over every component
 // (spins times R). Prints a markdown table for each set.
 //
@@ -11,7 +12,7 @@
 // mean (what a mix of impacts like the set costs), each with its ratio to the anchors'.
 import { cushionRebound, CUSHION_TOLERANCES } from '../shared/physics/index.ts';
 import type { CushionParams, CushionState } from '../shared/physics/index.ts';
-import { benchGrid, benchRandom, PAPER, relError } from '../tests/support/cushion-cases.ts';
+import { benchGrid, benchRandom, benchRolling, PAPER, relError } from '../tests/support/cushion-cases.ts';
 import type { GridCase } from '../tests/support/cushion-cases.ts';
 import { referenceRebound } from '../tests/support/cushion-reference.ts';
 import { anchorRebound } from './cushion-anchor.ts';
@@ -75,4 +76,6 @@ const grid = benchGrid(PAPER.R);
 table(`Cushion impacts, the grid: ${grid.length} (incidence 0.5-89.5°, V0 0.05-5 m/s, topspin k -1..2, sidespin k -2..2)`, grid);
 const draws = benchRandom(PAPER.R);
 table(`Cushion impacts, random draws: ${draws.length} uniform over the same range (seed 2026)`, draws);
+const rolling = benchRolling(PAPER.R);
+table(`Cushion impacts, rolling balls: ${rolling.length} with natural roll (k_T = 1), V0 0.05-5 m/s, α 0.5-89.5°, sidespin k -0.5..0.5 (seed 2027)`, rolling);
 if (sink === 42) console.log('');

@@ -78,14 +78,32 @@ export function benchGrid(R: number): GridCase[] {
  * the impact): the benchmark's second set, for what a typical impact costs.
  */
 export function benchRandom(R: number, count = 528, seed = 2026): GridCase[] {
+  return uniformDraws(R, count, seed, [-1, 2], 2);
+}
+
+/**
+ * `count` balls rolling on the cloth into the cushion (natural roll, k_T = 1, the commonest
+ * cushion hit in play: a ball struck on the cloth rolls within a metre or so), drawn from
+ * `seed` with V0 0.05-5 m/s, α 0.5-89.5° and a little sidespin, k_S -0.5..0.5: the
+ * benchmark's third set. From about 55° on, with little sidespin, the cushion slip passes
+ * through or near zero in restitution, which the express path leaves to the solver.
+ */
+export function benchRolling(R: number, count = 528, seed = 2027): GridCase[] {
+  return uniformDraws(R, count, seed, 1, 0.5);
+}
+
+/** Draws V0, α, then k_T (unless fixed) and k_S uniformly, in that order. */
+function uniformDraws(
+  R: number, count: number, seed: number, kT: number | readonly [number, number], kSMax: number,
+): GridCase[] {
   const next = generator(seed);
   const out: GridCase[] = [];
   for (let i = 0; i < count; i++) {
     const V0 = 0.05 + 4.95 * next();
     const alpha = 0.5 + 89 * next();
-    const kT = -1 + 3 * next();
-    const kS = -2 + 4 * next();
-    out.push({ V0, alpha, kT, kS, state: paperState(V0, alpha, kT, kS, R) });
+    const t = typeof kT === 'number' ? kT : kT[0] + (kT[1] - kT[0]) * next();
+    const kS = -kSMax + 2 * kSMax * next();
+    out.push({ V0, alpha, kT: t, kS, state: paperState(V0, alpha, t, kS, R) });
   }
   return out;
 }
