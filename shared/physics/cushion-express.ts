@@ -283,9 +283,10 @@ export function expressImpact(): number {
   // ball (the model is homogeneous in the speeds, and so is every decision here). No step is
   // longer than 3L, half again the whole frictionless impact (2L): with little friction the
   // last terms are tiny and say nothing of the impact's length. A ball rolling on the cloth into
-  // the cushion at a shallow angle rebounds after about 2.2L (its table slip, growing from zero,
-  // pulls vy back less than c per unit impulse): at 2L those impacts took a second step for the
-  // last tenth (5-35°, natural roll: the grid's mean 6.74 steps, 6.64 now, errors unchanged).
+  // the cushion at a shallow angle rebounds after about 2.2L (the table's friction, its slip
+  // growing from zero, pushes the ball towards the cushion, so vy falls by less than c per unit
+  // impulse): at 2L those impacts took a second step for their last tenth (5-35°, natural roll:
+  // the grid's mean 6.74 steps, 6.64 now, errors unchanged).
   const L = vy / c;
   const L2 = L * L;
   const L4 = L2 * L2;
