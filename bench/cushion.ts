@@ -39,15 +39,16 @@ function timeOne(solve: Solver, s: CushionState): number {
 const median = (a: readonly number[]): number => [...a].sort((x, y) => x - y)[a.length >> 1]!;
 const mean = (a: readonly number[]): number => a.reduce((x, y) => x + y, 0) / a.length;
 
-/** Times every setting on the cases and prints the table. */
-function table(title: string, cases: readonly GridCase[]): void {
+/** Times every setting on the cases and prints the table (and, for the grid, its speeds apart). */
+function table(title: string, cases: readonly GridCase[], bySpeed = false): void {
   const states = cases.map((g) => g.state);
   process.stdout.write(`Reference solutions for ${cases.length} impacts... `);
   const t0 = performance.now();
   const refs = cases.map((g) => referenceRebound(g.state, PAPER).state);
   process.stdout.write(`${((performance.now() - t0) / 1000).toFixed(1)} s\n\n`);
+  const errorsOf = (solve: Solver): number[] => cases.map((g, i) => relError(solve(g.state, PAPER), refs[i]!, PAPER.R, g.V0));
   const errors = (solve: Solver): { max: number; median: number } => {
-    const e = cases.map((g, i) => relError(solve(g.state, PAPER), refs[i]!, PAPER.R, g.V0)).sort((a, b) => a - b);
+    const e = errorsOf(solve).sort((a, b) => a - b);
     return { max: e[e.length - 1]!, median: e[e.length >> 1]! };
   };
   // Warm-up (JIT), then the rounds, the settings interleaved impact by impact.
@@ -70,10 +71,38 @@ function table(title: string, cases: readonly GridCase[]): void {
       `${means[i]!.toFixed(2)} | ${(means[anchor]! / means[i]!).toFixed(1)}× | ${e.max.toExponential(1)} | ${e.median.toExponential(1)} |`);
   });
   console.log('');
+  if (bySpeed) speeds(cases, perImpact[0]!, perImpact[anchor]!, errorsOf(settings[anchor]!.solve));
+}
+
+/**
+ * The grid's speeds apart, for the default setting (kernel: the per-impact times of the first
+ * setting) and the anchors: the kernel's cost does not depend on V0 (the model is homogeneous in
+ * the speeds), the anchors' does (their step is floored at 0.001 N s, so an impact at 0.05 m/s
+ * takes a handful of steps, and a badly wrong one). The last row leaves out 0.05 m/s: on it the
+ * anchors' largest and median errors are those that ../shared/physics.md gives for its grid of
+ * 528 impacts (about 2e-2 and 3e-3), which 0.05 m/s would take to 2.4e-1.
+ */
+function speeds(cases: readonly GridCase[], kernel: readonly number[], anchors: readonly number[], anchorErr: readonly number[]): void {
+  console.log('The grid by speed (kernel at its default setting):\n');
+  console.log('| V0 m/s | impacts | kernel median µs | anchors median µs | speed vs anchors (medians) | anchors\' max error | anchors\' median error |');
+  console.log('|---|---|---|---|---|---|---|');
+  const row = (name: string, keep: (g: GridCase) => boolean): void => {
+    const idx = cases.map((_, i) => i).filter((i) => keep(cases[i]!));
+    const k = median(idx.map((i) => kernel[i]!));
+    const a = median(idx.map((i) => anchors[i]!));
+    const e = idx.map((i) => anchorErr[i]!);
+    console.log(`| ${name} | ${idx.length} | ${k.toFixed(2)} | ${a.toFixed(2)} | ${(a / k).toFixed(1)}× | ` +
+      `${Math.max(...e).toExponential(1)} | ${median(e).toExponential(1)} |`);
+  };
+  for (const V0 of [...new Set(cases.map((g) => g.V0))]) row(String(V0), (g) => g.V0 === V0);
+  const slowest = Math.min(...cases.map((g) => g.V0));
+  row(`all but ${slowest}`, (g) => g.V0 !== slowest);
+  row('all', () => true);
+  console.log('');
 }
 
 const grid = benchGrid(PAPER.R);
-table(`Cushion impacts, the grid: ${grid.length} (incidence 0.5-89.5°, V0 0.05-5 m/s, topspin k -1..2, sidespin k -2..2)`, grid);
+table(`Cushion impacts, the grid: ${grid.length} (incidence 0.5-89.5°, V0 0.05-5 m/s, topspin k -1..2, sidespin k -2..2)`, grid, true);
 const draws = benchRandom(PAPER.R);
 table(`Cushion impacts, random draws: ${draws.length} uniform over the same range (seed 2026)`, draws);
 const rolling = benchRolling(PAPER.R);

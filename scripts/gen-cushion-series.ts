@@ -286,31 +286,56 @@ function estrin(coef: (k: number) => string, lo: number, hi: number): string {
   const high = estrin(coef, lo + span, hi);
   return `(${low} + ${high} * p${span})`;
 }
-w('/** The six series of q at p = q[SERIES_AT] into out (Estrin\'s scheme, the six side by side; the work to p^9). */');
-w('export function cushionSeriesAt(q: Float64Array, out: Float64Array): void {');
-w(`  const t = q[${6 * (N + 1) + 2}]!;`);
-w('  const p1 = t;');
-w('  const p2 = t * t;');
-w('  const p4 = p2 * p2;');
-w('  const p8 = p4 * p4;');
-for (let i = 0; i < 5; i++) w(`  out[${i}] = ${estrin((k) => `q[${i * (N + 1) + k}]!`, 0, N)};`);
-w(`  out[5] = ${estrin((k) => `q[${5 * (N + 1) + k}]!`, 0, N)} + q[${6 * (N + 1) + 1}]! * (p8 * t);`);
-w('}');
+/** The value of variable i of q at t (its Estrin form; the work's with its last term, to p^9). */
+const valueOf = (i: number): string => {
+  const poly = estrin((k) => `q[${i * (N + 1) + k}]!`, 0, N);
+  return i === 5 ? `${poly} + q[${6 * (N + 1) + 1}]! * (p8 * t)` : poly;
+};
+/** One evaluation function: its doc line, name and assignments, at p = q[SERIES_AT]. */
+function evaluator(doc: string, name: string, lines: readonly string[]): void {
+  w(`/** ${doc} */`);
+  w(`export function ${name}(q: Float64Array, out: Float64Array): void {`);
+  w(`  const t = q[${6 * (N + 1) + 2}]!;`);
+  w('  const p1 = t;');
+  w('  const p2 = t * t;');
+  w('  const p4 = p2 * p2;');
+  w('  const p8 = p4 * p4;');
+  for (const line of lines) w(`  ${line};`);
+  w('}');
+}
+evaluator(
+  'The six series of q at p = q[SERIES_AT] into out (Estrin\'s scheme, the six side by side; the work to p^9).',
+  'cushionSeriesAt',
+  [0, 1, 2, 3, 4, 5].map((i) => `out[${i}] = ${valueOf(i)}`),
+);
+w('');
+// A step's end in two parts: vy and the work first, which decide whether the impact ends inside
+// the step (then only the end of restitution is evaluated in full), then the other four when the
+// next step starts there. The same expressions as cushionSeriesAt's, so the same bits.
+evaluator(
+  'vy and the work W of q at p = q[SERIES_AT] into out[1] and out[5] (as cushionSeriesAt).',
+  'cushionSeriesEnd',
+  [1, 5].map((i) => `out[${i}] = ${valueOf(i)}`),
+);
+w('');
+evaluator(
+  'vx, R ωx, R ωy and R ωz of q at p = q[SERIES_AT] into out[0], out[2], out[3], out[4] (as cushionSeriesAt).',
+  'cushionSeriesRest',
+  [0, 2, 3, 4].map((i) => `out[${i}] = ${valueOf(i)}`),
+);
 w('');
 // The events' evaluation: vy with its slope and the work (the work's slope is c vy and its
 // curvature c dvy/dp, so this gives the roots of both events their Newton and Halley
 // corrections in one pass).
-w('/** vy, dvy/dp and the work W (to p^9) of q at p = q[SERIES_AT] into out[0], out[1], out[2] (Estrin\'s scheme). */');
-w('export function cushionSeriesEvent(q: Float64Array, out: Float64Array): void {');
-w(`  const t = q[${6 * (N + 1) + 2}]!;`);
-w('  const p1 = t;');
-w('  const p2 = t * t;');
-w('  const p4 = p2 * p2;');
-w('  const p8 = p4 * p4;');
-w(`  out[0] = ${estrin((k) => `q[${N + 1 + k}]!`, 0, N)};`);
-w(`  out[1] = ${estrin((k) => (k + 1 === 1 ? `q[${N + 1 + k + 1}]!` : `${k + 1} * q[${N + 1 + k + 1}]!`), 0, N - 1)};`);
-w(`  out[2] = ${estrin((k) => `q[${5 * (N + 1) + k}]!`, 0, N)} + q[${6 * (N + 1) + 1}]! * (p8 * t);`);
-w('}');
+evaluator(
+  'vy, dvy/dp and the work W (to p^9) of q at p = q[SERIES_AT] into out[0], out[1], out[2] (Estrin\'s scheme).',
+  'cushionSeriesEvent',
+  [
+    `out[0] = ${valueOf(1)}`,
+    `out[1] = ${estrin((k) => (k + 1 === 1 ? `q[${N + 1 + k + 1}]!` : `${k + 1} * q[${N + 1 + k + 1}]!`), 0, N - 1)}`,
+    `out[2] = ${valueOf(5)}`,
+  ],
+);
 
 /** The generated file's text (tests/unit/cushion-express.test.ts checks it is the one committed). */
 export const CUSHION_SERIES_SOURCE = `${out.join('\n')}\n`;

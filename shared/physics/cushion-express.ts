@@ -23,7 +23,8 @@
 import { ZERO_FRACTION } from './cushion-control.ts';
 import { ROOT_MOVE } from './cushion-dense.ts';
 import {
-  cushionSeries, cushionSeriesAt, cushionSeriesEvent, cushionSeriesRolling, SERIES_LENGTH,
+  cushionSeries, cushionSeriesAt, cushionSeriesEnd, cushionSeriesEvent, cushionSeriesRest, cushionSeriesRolling,
+  SERIES_LENGTH,
 } from './cushion-series.ts';
 
 /**
@@ -371,8 +372,10 @@ export function expressImpact(): number {
       dp = cut;
     }
     let from = 0;
+    // vy and the work at the step's end first: when restitution ends inside the step, the rest
+    // of the end is never needed (the result is evaluated where it ends).
     q[56] = dp; // q[SERIES_AT]
-    cushionSeriesAt(q, end);
+    cushionSeriesEnd(q, end);
     if (!restitution && end[1]! <= 0) {
       from = compressionEnd(q, dp, c, ee2 === 0 ? ROOT_MOVE : EVENT_DONE);
       const wc = EV[2]!;
@@ -387,6 +390,8 @@ export function expressImpact(): number {
       }
       if (end[1]! >= 0) return handOver(y, rest0, wEnd0, p, done); // vy back at zero: stalled (the solver decides)
     }
+    q[56] = dp; // (the roots above move it)
+    cushionSeriesRest(q, end);
     // The slips at the step's end only: with the cut above, a slip whose closest approach to zero
     // is below the threshold reaches the step's end before it (to first order in the step), so a
     // dip inside the step shows at its end. (A check in the middle as well never fired over

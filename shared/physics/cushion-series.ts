@@ -601,6 +601,30 @@ export function cushionSeriesAt(q: Float64Array, out: Float64Array): void {
   out[5] = ((((q[45]! + q[46]! * p1) + (q[47]! + q[48]! * p1) * p2) + ((q[49]! + q[50]! * p1) + (q[51]! + q[52]! * p1) * p2) * p4) + q[53]! * p8) + q[55]! * (p8 * t);
 }
 
+/** vy and the work W of q at p = q[SERIES_AT] into out[1] and out[5] (as cushionSeriesAt). */
+export function cushionSeriesEnd(q: Float64Array, out: Float64Array): void {
+  const t = q[56]!;
+  const p1 = t;
+  const p2 = t * t;
+  const p4 = p2 * p2;
+  const p8 = p4 * p4;
+  out[1] = ((((q[9]! + q[10]! * p1) + (q[11]! + q[12]! * p1) * p2) + ((q[13]! + q[14]! * p1) + (q[15]! + q[16]! * p1) * p2) * p4) + q[17]! * p8);
+  out[5] = ((((q[45]! + q[46]! * p1) + (q[47]! + q[48]! * p1) * p2) + ((q[49]! + q[50]! * p1) + (q[51]! + q[52]! * p1) * p2) * p4) + q[53]! * p8) + q[55]! * (p8 * t);
+}
+
+/** vx, R ωx, R ωy and R ωz of q at p = q[SERIES_AT] into out[0], out[2], out[3], out[4] (as cushionSeriesAt). */
+export function cushionSeriesRest(q: Float64Array, out: Float64Array): void {
+  const t = q[56]!;
+  const p1 = t;
+  const p2 = t * t;
+  const p4 = p2 * p2;
+  const p8 = p4 * p4;
+  out[0] = ((((q[0]! + q[1]! * p1) + (q[2]! + q[3]! * p1) * p2) + ((q[4]! + q[5]! * p1) + (q[6]! + q[7]! * p1) * p2) * p4) + q[8]! * p8);
+  out[2] = ((((q[18]! + q[19]! * p1) + (q[20]! + q[21]! * p1) * p2) + ((q[22]! + q[23]! * p1) + (q[24]! + q[25]! * p1) * p2) * p4) + q[26]! * p8);
+  out[3] = ((((q[27]! + q[28]! * p1) + (q[29]! + q[30]! * p1) * p2) + ((q[31]! + q[32]! * p1) + (q[33]! + q[34]! * p1) * p2) * p4) + q[35]! * p8);
+  out[4] = ((((q[36]! + q[37]! * p1) + (q[38]! + q[39]! * p1) * p2) + ((q[40]! + q[41]! * p1) + (q[42]! + q[43]! * p1) * p2) * p4) + q[44]! * p8);
+}
+
 /** vy, dvy/dp and the work W (to p^9) of q at p = q[SERIES_AT] into out[0], out[1], out[2] (Estrin's scheme). */
 export function cushionSeriesEvent(q: Float64Array, out: Float64Array): void {
   const t = q[56]!;

@@ -13,7 +13,9 @@ import {
   restitutionEnd, SERIES_CONSTANTS, seriesConstants,
 } from '../../shared/physics/cushion-express.ts';
 import { CushionModel } from '../../shared/physics/cushion-model.ts';
-import { cushionSeries, cushionSeriesAt, SERIES_AT, SERIES_CUT, SERIES_LENGTH, SERIES_TERMS } from '../../shared/physics/cushion-series.ts';
+import {
+  cushionSeries, cushionSeriesAt, cushionSeriesEnd, cushionSeriesRest, SERIES_AT, SERIES_CUT, SERIES_LENGTH, SERIES_TERMS,
+} from '../../shared/physics/cushion-series.ts';
 import { cushionImpact } from '../../shared/physics/index.ts';
 import type { CushionParams, CushionState } from '../../shared/physics/index.ts';
 import { CUSHION_SERIES_FILE, CUSHION_SERIES_SOURCE } from '../../scripts/gen-cushion-series.ts';
@@ -110,6 +112,26 @@ describe('cushion series', () => {
         for (let j = 0; j < 6; j++) expect(Math.abs(q[j * NT + 1]! - k1[j]!)).toBeLessThan(1e-14);
       }
     }
+  });
+
+  it('is evaluated at a step\'s end in two parts (vy and the work, then the rest) with the bits of the whole', () => {
+    const q = new Float64Array(SERIES_LENGTH);
+    const whole = new Float64Array(6);
+    const parts = new Float64Array(6);
+    fc.assert(
+      fc.property(issueImpact, fc.double({ min: 0, max: 3, noNaN: true }), (g, x) => {
+        const { k } = constants(g.params);
+        if (!cushionSeries(internal(g.state, g.params.R), q, k)) return;
+        q[SERIES_AT] = (x * g.state.vy) / k[1]!;
+        cushionSeriesAt(q, whole);
+        parts.fill(NaN);
+        cushionSeriesEnd(q, parts);
+        expect([parts[1], parts[5]]).toEqual([whole[1], whole[5]]);
+        cushionSeriesRest(q, parts);
+        expect(Array.from(parts)).toEqual(Array.from(whole));
+      }),
+      { numRuns: 500, seed: 5 },
+    );
   });
 });
 
