@@ -78,9 +78,10 @@ function table(title: string, cases: readonly GridCase[], bySpeed = false): void
  * The grid's speeds apart, for the default setting (kernel: the per-impact times of the first
  * setting) and the anchors: the kernel's cost does not depend on V0 (the model is homogeneous in
  * the speeds), the anchors' does (their step is floored at 0.001 N s, so an impact at 0.05 m/s
- * takes a handful of steps, and a badly wrong one). The last row leaves out 0.05 m/s: on it the
- * anchors' largest and median errors are those that ../shared/physics.md gives for its grid of
- * 528 impacts (about 2e-2 and 3e-3), which 0.05 m/s would take to 2.4e-1.
+ * takes a handful of steps, and a badly wrong one). The row before the whole grid's leaves out
+ * the slowest speed: without it the anchors' largest and median errors are those that
+ * ../shared/physics.md gives for its grid of 528 impacts (about 2e-2 and 3e-3), which 0.05 m/s
+ * takes to 2.4e-1.
  */
 function speeds(cases: readonly GridCase[], kernel: readonly number[], anchors: readonly number[], anchorErr: readonly number[]): void {
   console.log('The grid by speed (kernel at its default setting):\n');
