@@ -80,13 +80,13 @@ function emit(rolling: boolean): void {
     w(' * λ = |a| - 3.5 μs A along it). False when it would not grow (λ <= 0: it rolls) or the');
     w(' * table\'s normal impulse is not positive.');
   } else {
-    w(' * Fills q with the series of y about the state y: variable i\'s coefficient of p^k at');
+    w(' * Fills q with the series of y about the state in start: variable i\'s coefficient of p^k at');
     w(` * q[${N + 1} i + k], and q[SERIES_CUT]. k holds the constants (seriesConstants in`);
     w(' * cushion-express.ts). False, with q unspecified, when the table\'s normal impulse is not');
     w(' * positive at the start (its clamp at 0 would make the series wrong).');
   }
   w(' */');
-  w(`export function ${name}(y: Float64Array, q: Float64Array, k: Float64Array): boolean {`);
+  w(`function ${name}(): boolean {`);
   w('  const s = k[0]!;');
   w('  const c = k[1]!;');
   w('  const nmuW = k[2]!;');
@@ -100,7 +100,7 @@ function emit(rolling: boolean): void {
   w('  const wCy = k[10]!;');
   w('  const sc = k[11]!;');
   w('  const lim = k[12]!;');
-  for (let i = 0; i < 6; i++) w(`  const y${i}_0 = y[${i}]!;`);
+  for (let i = 0; i < 6; i++) w(`  const y${i}_0 = start[${i}]!;`);
   w('  // The slips (cushion-model.ts, paper eqs. 12, 13).');
   w('  const eIx0 = y0_0 + s * y3_0 - c * y4_0;');
   w('  const eIy0 = y2_0 - s * y1_0;');
@@ -268,6 +268,46 @@ function rollingDirection(k: number): void {
   w(`  const uCy${k} = (wCy${k} - rC${k} * uCy0 - Sy${k}) * iC;`);
 }
 
+w('/** The series constants\' count (seriesConstants in cushion-express.ts). */');
+w('export const SERIES_CONSTANTS = 13;');
+w('');
+w('/** The series kernel: its arrays and the functions that fill and evaluate them. */');
+w('export interface CushionSeriesKernel {');
+w('  /** The series: variable i\'s coefficient of p^k at q[SERIES_TERMS i + k], then the cut, the work\'s last term and the point to evaluate at. */');
+w('  readonly q: Float64Array;');
+w('  /** The constants (seriesConstants in cushion-express.ts). */');
+w('  readonly k: Float64Array;');
+w('  /** The state a series starts from. */');
+w('  readonly start: Float64Array;');
+w('  /** A step\'s end (endFirst: vy and W; endRest: the other four). */');
+w('  readonly end: Float64Array;');
+w('  /** The six values (valueAt). */');
+w('  readonly out: Float64Array;');
+w('  /** vy, dvy/dp and W (event). */');
+w('  readonly ev: Float64Array;');
+w('  series(): boolean;');
+w('  seriesRolling(): boolean;');
+w('  valueAt(): void;');
+w('  endFirst(): void;');
+w('  endRest(): void;');
+w('  event(): void;');
+w('}');
+w('');
+w('/**');
+w(' * Makes the series kernel. Call it once: the arrays are constants of one closure, so that V8\'s');
+w(' * optimizing compiler embeds them (no bounds or map checks on their accesses).');
+w(' */');
+w('export function cushionSeriesKernel(): CushionSeriesKernel {');
+const factoryStart = out.length;
+w('// Each array over an ArrayBuffer of its own: one of 64 bytes or less made by its length lives in');
+w('// the JavaScript heap, where the collector may move it, and the compiled code then loads its');
+w('// address and length and checks the index at each use.');
+w('const q = new Float64Array(new ArrayBuffer(SERIES_LENGTH * 8));');
+w('const k = new Float64Array(new ArrayBuffer(SERIES_CONSTANTS * 8));');
+w('const start = new Float64Array(new ArrayBuffer(6 * 8));');
+w('const end = new Float64Array(new ArrayBuffer(6 * 8));');
+w('const out = new Float64Array(new ArrayBuffer(6 * 8));');
+w('const ev = new Float64Array(new ArrayBuffer(3 * 8));');
 emit(false);
 w('');
 emit(true);
@@ -294,7 +334,7 @@ const valueOf = (i: number): string => {
 /** One evaluation function: its doc line, name and assignments, at p = q[SERIES_AT]. */
 function evaluator(doc: string, name: string, lines: readonly string[]): void {
   w(`/** ${doc} */`);
-  w(`export function ${name}(q: Float64Array, out: Float64Array): void {`);
+  w(`function ${name}(): void {`);
   w(`  const t = q[${6 * (N + 1) + 2}]!;`);
   w('  const p1 = t;');
   w('  const p2 = t * t;');
@@ -315,13 +355,13 @@ w('');
 evaluator(
   'vy and the work W of q at p = q[SERIES_AT] into out[1] and out[5] (as cushionSeriesAt).',
   'cushionSeriesEnd',
-  [1, 5].map((i) => `out[${i}] = ${valueOf(i)}`),
+  [1, 5].map((i) => `end[${i}] = ${valueOf(i)}`),
 );
 w('');
 evaluator(
   'vx, R ωx, R ωy and R ωz of q at p = q[SERIES_AT] into out[0], out[2], out[3], out[4] (as cushionSeriesAt).',
   'cushionSeriesRest',
-  [0, 2, 3, 4].map((i) => `out[${i}] = ${valueOf(i)}`),
+  [0, 2, 3, 4].map((i) => `end[${i}] = ${valueOf(i)}`),
 );
 w('');
 // The events' evaluation: vy with its slope and the work (the work's slope is c vy and its
@@ -331,11 +371,18 @@ evaluator(
   'vy, dvy/dp and the work W (to p^9) of q at p = q[SERIES_AT] into out[0], out[1], out[2] (Estrin\'s scheme).',
   'cushionSeriesEvent',
   [
-    `out[0] = ${valueOf(1)}`,
-    `out[1] = ${estrin((k) => (k + 1 === 1 ? `q[${N + 1 + k + 1}]!` : `${k + 1} * q[${N + 1 + k + 1}]!`), 0, N - 1)}`,
-    `out[2] = ${valueOf(5)}`,
+    `ev[0] = ${valueOf(1)}`,
+    `ev[1] = ${estrin((k) => (k + 1 === 1 ? `q[${N + 1 + k + 1}]!` : `${k + 1} * q[${N + 1 + k + 1}]!`), 0, N - 1)}`,
+    `ev[2] = ${valueOf(5)}`,
   ],
 );
+
+w('return {');
+w('  q, k, start, end, out, ev, series: cushionSeries, seriesRolling: cushionSeriesRolling, valueAt: cushionSeriesAt,');
+w('  endFirst: cushionSeriesEnd, endRest: cushionSeriesRest, event: cushionSeriesEvent,');
+w('};');
+for (let i = factoryStart; i < out.length; i++) if (out[i] !== '') out[i] = `  ${out[i]}`;
+w('}');
 
 /** The generated file's text (tests/unit/cushion-express.test.ts checks it is the one committed). */
 export const CUSHION_SERIES_SOURCE = `${out.join('\n')}\n`;

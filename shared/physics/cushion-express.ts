@@ -22,10 +22,8 @@
 // energy than the ball brought (see finish).
 import { ZERO_FRACTION } from './cushion-control.ts';
 import { ROOT_MOVE } from './cushion-dense.ts';
-import {
-  cushionSeries, cushionSeriesAt, cushionSeriesEnd, cushionSeriesEvent, cushionSeriesRest, cushionSeriesRolling,
-  SERIES_LENGTH,
-} from './cushion-series.ts';
+import { cushionSeriesKernel } from './cushion-series.ts';
+import type { CushionSeriesKernel } from './cushion-series.ts';
 
 /**
  * The series step's error tolerance, as a multiple of the solver's. The step is set by the
@@ -63,26 +61,6 @@ export const EXPRESS_SLIP_MIN = 0.05;
 /** More series steps than this send the impact to the solver. */
 export const EXPRESS_MAX_STEPS = 16;
 
-// The series (6 variables × SERIES_TERMS coefficients, the cut and the work's last term), its constants
-// and the state at a step's start.
-const Q = new Float64Array(SERIES_LENGTH);
-/** The series' constants (seriesConstants). */
-export const SERIES_CONSTANTS = 13;
-const K = new Float64Array(SERIES_CONSTANTS);
-const Y = new Float64Array(6);
-/** The state at the start of the step the express path left on (see EXPRESS_HANDOVER). */
-export const EXPRESS_FROM: Float64Array = Y;
-// The state at a step's end.
-const END = new Float64Array(6);
-/** The express result, in the internal variables [vx, vy, R ωx, R ωy, R ωz, W]. */
-export const EXPRESS_OUT = new Float64Array(6);
-/**
- * Where the solver continues an impact the express path left after some steps: the state
- * (internal variables, EXPRESS_FROM), whether compression has ended, the work's target and the
- * impulse per unit mass so far.
- */
-export const EXPRESS_HANDOVER = { restitution: false, wEnd: 0, p: 0 };
-
 /**
  * The constants the series functions read (cushion-series.ts), for sinθ = s, cosθ = c, the
  * frictions and the slip speed lim at which a shrinking slip's cut is aimed (SERIES_CUT):
@@ -118,106 +96,360 @@ export function seriesConstants(k: Float64Array, s: number, c: number, muS: numb
  * iterations each, and the work at the first one another evaluation; now 1.07 and 1.19.
  */
 export const EVENT_DONE = 1e-3;
-/** vy, dvy/dp and W at the point of the last event evaluation (cushionSeriesEvent). */
-export const EXPRESS_EVENT = new Float64Array(3);
-const EV = EXPRESS_EVENT;
+
+/** The express path's kernel: made once (expressKernel), see cushionSeriesKernel. */
+interface ExpressKernel {
+  readonly sk: CushionSeriesKernel;
+  readonly input: Float64Array;
+  readonly handover: { restitution: boolean; wEnd: number; p: number };
+  impact(): number;
+  compressionEnd(dp: number, c: number, done: number): number;
+  restitutionEnd(target: number, lo: number, hi: number, c: number): number;
+}
 
 /**
- * The end of compression in a step of length dp whose series q takes vy from above 0 to 0 or
- * below: the impulse of vy = 0, with the work there in EXPRESS_EVENT[2]. From the root of vy's
- * quadratic part, Newton's method kept inside the bracket (bisection otherwise) until its
- * correction dx is below done × dp; the work at the root is then W(x) - c vy(x) dx / 2
- * (dW/dp = c vy: the second-order Taylor step to the root, its error of order dx³), from the
- * same pass.
+ * Makes the express path's kernel, once. Its arrays and functions are constants of this one
+ * closure (and of the series kernel's), so that V8's optimizing compiler embeds them: no loads of
+ * an array's address and length, no bounds or map checks on its accesses, direct calls. (At a
+ * module's top level they would not be: the bundler turns a module's `const` into `var`, which
+ * the compiler must reload and check at each use. The same bits; a three-step impact 8,162
+ * instructions in the kernel's functions against 9,336, 6-7% less time.)
  */
-export function compressionEnd(q: Float64Array, dp: number, c: number, done: number): number {
-  const a0 = q[9]!; // vy's first three coefficients (q[9 i + k], i = 1)
-  const a1 = q[10]!;
-  const a2 = q[11]!;
-  const disc = a1 * a1 - 4 * a2 * a0;
-  // a0 + a1 x + a2 x² = 0 with a0 > 0: the smallest positive root, without cancellation.
-  const den = disc >= 0 ? Math.sqrt(disc) - a1 : 0;
-  let x = den > 0 ? (2 * a0) / den : -a0 / a1;
-  let lo = 0;
-  let hi = dp;
-  if (!(x > lo && x < hi)) x = 0.5 * dp;
-  const ev = EV;
-  const eps = done * dp;
-  for (let it = 0; it < 60; it++) {
-    q[56] = x; // q[SERIES_AT]
-    cushionSeriesEvent(q, ev);
-    const v = ev[0]!;
-    const d = ev[1]!;
-    if (v > 0) lo = x;
-    else hi = x;
-    const dx = v / d;
-    const next = x - dx;
-    if (next >= lo && next <= hi && d < 0) {
-      if (Math.abs(dx) <= eps) {
-        ev[2] = ev[2]! - 0.5 * c * v * dx;
-        return next;
+function expressKernel(): ExpressKernel {
+  const sk = cushionSeriesKernel();
+  const q = sk.q;
+  const K = sk.k;
+  const start = sk.start;
+  const end = sk.end;
+  const out = sk.out;
+  const ev = sk.ev;
+  const series = sk.series;
+  const seriesRolling = sk.seriesRolling;
+  const valueAt = sk.valueAt;
+  const endFirst = sk.endFirst;
+  const endRest = sk.endRest;
+  const event = sk.event;
+  // The input (EXPRESS_IN), 96 bytes: an ArrayBuffer of its own (see cushionSeriesKernel).
+  const IN = new Float64Array(new ArrayBuffer(12 * 8));
+  const HANDOVER = { restitution: false, wEnd: 0, p: 0 };
+  /**
+   * The end of compression in a step of length dp whose series q takes vy from above 0 to 0 or
+   * below: the impulse of vy = 0, with the work there in EXPRESS_EVENT[2]. From the root of vy's
+   * quadratic part, Newton's method kept inside the bracket (bisection otherwise) until its
+   * correction dx is below done × dp; the work at the root is then W(x) - c vy(x) dx / 2
+   * (dW/dp = c vy: the second-order Taylor step to the root, its error of order dx³), from the
+   * same pass.
+   */
+  function compressionEnd(dp: number, c: number, done: number): number {
+    const a0 = q[9]!; // vy's first three coefficients (q[9 i + k], i = 1)
+    const a1 = q[10]!;
+    const a2 = q[11]!;
+    const disc = a1 * a1 - 4 * a2 * a0;
+    // a0 + a1 x + a2 x² = 0 with a0 > 0: the smallest positive root, without cancellation.
+    const den = disc >= 0 ? Math.sqrt(disc) - a1 : 0;
+    let x = den > 0 ? (2 * a0) / den : -a0 / a1;
+    let lo = 0;
+    let hi = dp;
+    if (!(x > lo && x < hi)) x = 0.5 * dp;
+    const eps = done * dp;
+    for (let it = 0; it < 60; it++) {
+      q[56] = x; // q[SERIES_AT]
+      event();
+      const v = ev[0]!;
+      const d = ev[1]!;
+      if (v > 0) lo = x;
+      else hi = x;
+      const dx = v / d;
+      const next = x - dx;
+      if (next >= lo && next <= hi && d < 0) {
+        if (Math.abs(dx) <= eps) {
+          ev[2] = ev[2]! - 0.5 * c * v * dx;
+          return next;
+        }
+        x = next;
+      } else {
+        x = 0.5 * (lo + hi);
       }
-      x = next;
-    } else {
-      x = 0.5 * (lo + hi);
+      if (hi - lo <= 1e-12 * dp) break; // (bisection alone: to rounding)
     }
-    if (hi - lo <= 1e-12 * dp) break; // (bisection alone: to rounding)
+    return x;
   }
-  return x;
-}
 
-/**
- * The end of restitution in [lo, hi] of a step of length hi (the work above target at lo, at or
- * below it at hi): where W falls to target, by Halley's method (W' = c vy and W'' = c dvy/dp
- * from the same pass; Newton's correction where Halley's would not be defined) kept inside the
- * bracket by bisection, from the root of the work's quadratic part (workStart) or the bracket's
- * middle, until its correction is below EVENT_DONE of the step.
- */
-export function restitutionEnd(q: Float64Array, target: number, lo: number, hi: number, c: number): number {
-  const dp = hi;
-  const eps = EVENT_DONE * dp;
-  const ev = EV;
-  const x0 = workStart(q, target);
-  let x = x0 > lo && x0 < hi ? x0 : 0.5 * (lo + hi);
-  for (let it = 0; it < 60; it++) {
-    q[56] = x; // q[SERIES_AT]
-    cushionSeriesEvent(q, ev);
-    const f = ev[2]! - target;
-    if (f === 0) return x;
-    if (f > 0) lo = x;
-    else hi = x;
-    const f1 = c * ev[0]!;
-    const den = f1 * f1 - 0.5 * f * (c * ev[1]!);
-    const dx = den > 0 ? (f * f1) / den : f / f1;
-    const next = x - dx;
-    if (next > lo && next < hi) {
-      if (Math.abs(dx) <= eps) return next;
-      x = next;
-    } else {
-      x = 0.5 * (lo + hi);
+  /**
+   * The end of restitution in [lo, hi] of a step of length hi (the work above target at lo, at or
+   * below it at hi): where W falls to target, by Halley's method (W' = c vy and W'' = c dvy/dp
+   * from the same pass; Newton's correction where Halley's would not be defined) kept inside the
+   * bracket by bisection, from the root of the work's quadratic part (workStart) or the bracket's
+   * middle, until its correction is below EVENT_DONE of the step.
+   */
+  function restitutionEnd(target: number, lo: number, hi: number, c: number): number {
+    const dp = hi;
+    const eps = EVENT_DONE * dp;
+    const x0 = workStart(target);
+    let x = x0 > lo && x0 < hi ? x0 : 0.5 * (lo + hi);
+    for (let it = 0; it < 60; it++) {
+      q[56] = x; // q[SERIES_AT]
+      event();
+      const f = ev[2]! - target;
+      if (f === 0) return x;
+      if (f > 0) lo = x;
+      else hi = x;
+      const f1 = c * ev[0]!;
+      const den = f1 * f1 - 0.5 * f * (c * ev[1]!);
+      const dx = den > 0 ? (f * f1) / den : f / f1;
+      const next = x - dx;
+      if (next > lo && next < hi) {
+        if (Math.abs(dx) <= eps) return next;
+        x = next;
+      } else {
+        x = 0.5 * (lo + hi);
+      }
+      if (hi - lo <= 1e-12 * dp) break; // (bisection alone: to rounding)
     }
-    if (hi - lo <= 1e-12 * dp) break; // (bisection alone: to rounding)
+    return x;
   }
-  return x;
+
+  /** Whether both slips at the step's end are at least √min2. */
+  function slipsAbove(s: number, c: number, min2: number): boolean {
+    const z = end;
+    const ix = z[0]! + s * z[3]! - c * z[4]!;
+    const iy = z[2]! - s * z[1]!;
+    const cx = z[0]! - z[3]!;
+    const cy = z[1]! + z[2]!;
+    return ix * ix + iy * iy >= min2 && cx * cx + cy * cy >= min2;
+  }
+
+  /**
+   * The impact in EXPRESS_IN, with vy > 0 (checked by the caller), on the express path: the
+   * number of series steps it took, with the result in EXPRESS_OUT; 0 when it declines at the
+   * start; minus the steps it took when it leaves its branch later (the solver continues from
+   * EXPRESS_FROM and EXPRESS_HANDOVER).
+   */
+  function expressImpact(): number {
+    const input = IN;
+    const vx = input[0]!;
+    const vy = input[1]!;
+    const wx = input[2]!;
+    const wy = input[3]!;
+    const wz = input[4]!;
+    const R = input[5]!;
+    const h = input[6]!;
+    const ee = input[7]!;
+    const muS = input[8]!;
+    const muW = input[9]!;
+    const tol = input[10]!;
+    // The tuning constants as locals, read once per impact: a module-level binding is a context
+    // slot that the optimized code loads and checks at each use in the loop below.
+    const ratioGain = RATIO_GAIN;
+    const ratioMax = RATIO_MAX;
+    const ratioFloor = RATIO_FLOOR;
+    const maxSteps = EXPRESS_MAX_STEPS;
+    const s = (h - R) / R;
+    const c = Math.sqrt((1 - s) * (1 + s));
+    // The table's normal impulse stays positive (sinθ + μw cosθ u_I,y > 0 for every direction), and
+    // the impulse always pushes the ball out (dvy/dp < 0 for every pair of slip directions).
+    if (!(s > c * muW) || !(s * muW + muS * (s + c * muW) < c)) return 0;
+    const V = Math.sqrt(vx * vx + vy * vy);
+    const lim = EXPRESS_SLIP_MIN * V;
+    const min2 = lim * lim;
+    const ox = R * wx;
+    const oy = R * wy;
+    const oz = R * wz;
+    // A table slip that is zero (a ball rolling on the cloth, within ZERO_FRACTION of the speed,
+    // as the solver counts it) starts the impact with cushionSeriesRolling.
+    let rolling = false;
+    {
+      const ix = vx + s * oy - c * oz;
+      const iy = ox - s * vy;
+      const cx = vx - oy;
+      const cy = vy + ox;
+      const zero = ZERO_FRACTION * V;
+      if (!(ix * ix + iy * iy >= min2)) return 0;
+      if (cx * cx + cy * cy <= zero * zero) rolling = true;
+      else if (!(cx * cx + cy * cy >= min2)) return 0;
+    }
+    seriesConstants(K, s, c, muS, muW, lim);
+    start[0] = vx;
+    start[1] = vy;
+    start[2] = ox;
+    start[3] = oy;
+    start[4] = oz;
+    start[5] = 0;
+    // Error weights: the speeds against tol V, the work against tol V c vy (an error dW moves the
+    // end by dW / (c |vy|), as in the solver).
+    const iv = 1 / (EXPRESS_TOL_FACTOR * tol * V);
+    const iw = iv / (c * vy);
+    // The step is measured in L = vy / c (the frictionless compression's impulse), so that the
+    // series' last two terms, each made relative to it (a_k L^k), compare alike however fast the
+    // ball (the model is homogeneous in the speeds, and so is every decision here). No step is
+    // longer than 3L, half again the whole frictionless impact (2L): with little friction the
+    // last terms are tiny and say nothing of the impact's length. A ball rolling on the cloth into
+    // the cushion at a shallow angle rebounds after about 2.2L (the table's friction, its slip
+    // growing from zero, pushes the ball towards the cushion, so vy falls by less than c per unit
+    // impulse): at 2L those impacts took a second step for their last tenth (5-35°, natural roll:
+    // the grid's mean 6.74 steps, 6.64 now, errors unchanged).
+    const L = vy / c;
+    const L2 = L * L;
+    const L4 = L2 * L2;
+    const w6 = L4 * L2;
+    const w7 = w6 * L;
+    const w8 = L4 * L4;
+    const hMax = 3 * L;
+    const ee2 = ee * ee;
+    // Twice the kinetic and rotational energy per unit mass (I = 2/5 M R²).
+    const e0 = vx * vx + vy * vy + 0.4 * (ox * ox + oy * oy + oz * oz);
+    let restitution = false;
+    let wEnd = 0;
+    let p = 0;
+    for (let step = 1; step <= maxSteps; step++) {
+      // If this step leaves the branch, the solver continues from its start (handOver).
+      const rest0 = restitution;
+      const wEnd0 = wEnd;
+      const done = 1 - step; // 0 or minus the steps taken
+      if (!(rolling ? seriesRolling() : series())) return handOver(rest0, wEnd0, p, done);
+      // The step from the series' two last terms (after Jorba and Zou 2005): the largest h with
+      // |a_k L^k| (h / L)^8 within the tolerance for k = 7 and 8, each variable against its weight.
+      // The largest weighted coefficients of p^6, p^7 and p^8 (q[9 i + k], SERIES_TERMS = 9: the
+      // indices are written out, a loop with computed indices cost 4% of an impact).
+      let n6 = Math.abs(q[51]!) * iw;
+      let n7 = Math.abs(q[52]!) * iw;
+      let n8 = Math.abs(q[53]!) * iw;
+      const a6 = Math.max(Math.abs(q[6]!), Math.abs(q[15]!), Math.abs(q[24]!), Math.abs(q[33]!), Math.abs(q[42]!)) * iv;
+      const a7 = Math.max(Math.abs(q[7]!), Math.abs(q[16]!), Math.abs(q[25]!), Math.abs(q[34]!), Math.abs(q[43]!)) * iv;
+      const a8 = Math.max(Math.abs(q[8]!), Math.abs(q[17]!), Math.abs(q[26]!), Math.abs(q[35]!), Math.abs(q[44]!)) * iv;
+      if (a6 > n6) n6 = a6;
+      if (a7 > n7) n7 = a7;
+      if (a8 > n8) n8 = a8;
+      n6 *= w6;
+      n7 *= w7;
+      n8 *= w8;
+      const n = n7 > n8 ? n7 : n8;
+      const t = Math.sqrt(Math.sqrt(Math.sqrt(n))); // L / (the last terms' step)
+      let dp = n > 0 ? L / t : hMax;
+      // The ratio test: with the terms falling by r = n8 / n7 an order (in units of L; n8 floored,
+      // below; each n_k is the largest over the variables, so r may mix two of them), the
+      // series' tail past p^8 at x = h / L is about n8 x^8 · x r / (1 - x r), a geometric series,
+      // which on most steps is far below the last terms themselves. The step where that tail meets
+      // the tolerance, with x r / (1 - x r) taken at the last terms' step x0 = 1 / t:
+      // x^8 = g n7 / n8² with g = (1 - x0 r) / x0 = t - r, so x = (n7 / n8²)^(1/8) g^(1/8), the
+      // first factor's square roots beside t's and g^(1/8) by its Padé approximant
+      // (7 + 9g) / (9 + 7g) (g > 1/4 here, as x0 < 2 and x0 r < 1/2: within 2.4% up to g = 4,
+      // above g^(1/8) below g = 1 and below it above); at most RATIO_GAIN x0, with x r <= RATIO_MAX,
+      // and only when x0 r < RATIO_MAX. Taken at x0, the factor understates the tail at the longer
+      // x, by up to 2 at the caps: the halved tolerance (EXPRESS_TOL_FACTOR) covers it. On the
+      // benchmark grid (paper constants) 296 of the 528 impacts end on this path in at most three
+      // steps, where 200 did.
+      // The last term's level for the test: at least RATIO_FLOOR of the two before's extrapolation,
+      // n7² / n6 (compared without a division, which only the rare floor needs; n6 = 0 makes the
+      // floor infinite, and the test then keeps x0).
+      const f8 = ratioFloor * n7 * n7;
+      const m8 = n8 * n6 < f8 ? f8 / n6 : n8;
+      if (m8 > 0 && n7 > 0 && dp < hMax) {
+        const r = m8 / n7;
+        if (r < ratioMax * t) {
+          const g = t - r;
+          let x = Math.sqrt(Math.sqrt(Math.sqrt(n7 / (m8 * m8)))) * ((7 + 9 * g) / (9 + 7 * g));
+          if (x * r > ratioMax) x = ratioMax / r;
+          const xt = x * t; // x / x0
+          if (xt > ratioGain) dp = (ratioGain * L) / t;
+          else if (xt > 1) dp = x * L;
+        }
+      }
+      if (!(dp <= hMax)) dp = hMax;
+      // A shrinking slip is not carried below EXPRESS_SLIP_MIN by a step, as predicted from its
+      // rate along itself (as the solver aims its steps at a slip's zero): a slip closing on zero
+      // nearly head-on makes the series' last terms small however near the zero is (its direction
+      // flips across a width that those terms cannot see), and past it the series would go on
+      // slipping where the contact sticks. Where that leaves less than a quarter step, the solver
+      // continues from here.
+      const cut = q[54]!; // q[SERIES_CUT]
+      if (cut < dp) {
+        if (cut < 0.25 * dp) return handOver(rest0, wEnd0, p, done);
+        dp = cut;
+      }
+      let from = 0;
+      // vy and the work at the step's end first: when restitution ends inside the step, the rest
+      // of the end is never needed (the result is evaluated where it ends).
+      q[56] = dp; // q[SERIES_AT]
+      endFirst();
+      if (!restitution && end[1]! <= 0) {
+        from = compressionEnd(dp, c, ee2 === 0 ? ROOT_MOVE : EVENT_DONE);
+        const wc = ev[2]!;
+        wEnd = wc - ee2 * wc;
+        restitution = true;
+        if (ee2 === 0) return finish(from, e0) ? step : handOver(rest0, wEnd0, p, done);
+      }
+      if (restitution) {
+        if (end[5]! <= wEnd) {
+          const t = restitutionEnd(wEnd, from, dp, c);
+          return finish(t, e0) ? step : handOver(rest0, wEnd0, p, done);
+        }
+        if (end[1]! >= 0) return handOver(rest0, wEnd0, p, done); // vy back at zero: stalled (the solver decides)
+      }
+      q[56] = dp; // (the roots above move it)
+      endRest();
+      // The slips at the step's end only: with the cut above, a slip whose closest approach to zero
+      // is below the threshold reaches the step's end before it (to first order in the step), so a
+      // dip inside the step shows at its end. (A check in the middle as well never fired over
+      // 217,836 impacts, random and structured, and cost 9% of the time.)
+      if (!slipsAbove(s, c, min2)) return handOver(rest0, wEnd0, p, done);
+      rolling = false;
+      start[0] = end[0]!;
+      start[1] = end[1]!;
+      start[2] = end[2]!;
+      start[3] = end[3]!;
+      start[4] = end[4]!;
+      start[5] = end[5]!;
+      p += dp;
+    }
+    return handOver(restitution, wEnd, p, -maxSteps);
+  }
+
+  /**
+   * Records where the solver continues (EXPRESS_HANDOVER, and the state from in EXPRESS_FROM) and
+   * returns code.
+   */
+  function handOver(restitution: boolean, wEnd: number, p: number, code: number): number {
+    const h = HANDOVER;
+    h.restitution = restitution;
+    h.wEnd = wEnd;
+    h.p = p;
+    return code;
+  }
+
+  /**
+   * Where the work's series without its terms above p² falls to target (the work is nearly
+   * quadratic in p: its rate c vy is nearly linear), as a start for restitutionEnd; -1 when it
+   * does not.
+   */
+  function workStart(target: number): number {
+    const a = q[47]!; // the work's first three coefficients (q[9 i + k], i = 5)
+    const b = q[46]!;
+    const c0 = q[45]! - target;
+    // a p² + b p + c0 = 0 with a < 0 (vy falls) and c0 > 0: the positive root, without cancellation.
+    const disc = b * b - 4 * a * c0;
+    if (!(a < 0) || !(disc >= 0)) return -1;
+    const sq = Math.sqrt(disc);
+    return b >= 0 ? (-b - sq) / (2 * a) : (2 * c0) / (sq - b);
+  }
+
+  /**
+   * The result at p = t into EXPRESS_OUT; false (the solver continues from the step's start) when
+   * it has more kinetic and rotational energy than e0 (the same sum at the start). The model only
+   * dissipates; near grazing, with e_e near 1, it dissipates so little that the series' error
+   * could show as a gain, which the solver, stepping more finely there, does not make.
+   */
+  function finish(t: number, e0: number): boolean {
+    const o = out;
+    q[56] = t; // q[SERIES_AT]
+    valueAt();
+    return o[0]! * o[0]! + o[1]! * o[1]! + 0.4 * (o[2]! * o[2]! + o[3]! * o[3]! + o[4]! * o[4]!) <= e0;
+  }
+
+  return { sk, input: IN, handover: HANDOVER, impact: expressImpact, compressionEnd, restitutionEnd };
 }
 
-/** Whether both slips of state z are at least √min2. */
-function slipsAbove(z: Float64Array, s: number, c: number, min2: number): boolean {
-  const ix = z[0]! + s * z[3]! - c * z[4]!;
-  const iy = z[2]! - s * z[1]!;
-  const cx = z[0]! - z[3]!;
-  const cy = z[1]! + z[2]!;
-  return ix * ix + iy * iy >= min2 && cx * cx + cy * cy >= min2;
-}
-
-/**
- * The express path's input, written by the caller: [vx, vy, wx, wy, wz, R, h, e_e, μs, μw, tol]
- * (tol the solver's tolerance, relative to the speed), and the mass after them, which the
- * express path does not need (the caller's solver does). An array rather than eleven arguments:
- * a number passed to a function that is not inlined is boxed, a heap allocation each (4% of an
- * impact, measured side by side).
- */
-export const EXPRESS_IN = new Float64Array(12);
+const EXPRESS = expressKernel();
 
 /**
  * The impact in EXPRESS_IN, with vy > 0 (checked by the caller), on the express path: the
@@ -225,225 +457,33 @@ export const EXPRESS_IN = new Float64Array(12);
  * start; minus the steps it took when it leaves its branch later (the solver continues from
  * EXPRESS_FROM and EXPRESS_HANDOVER).
  */
-export function expressImpact(): number {
-  const input = EXPRESS_IN;
-  const vx = input[0]!;
-  const vy = input[1]!;
-  const wx = input[2]!;
-  const wy = input[3]!;
-  const wz = input[4]!;
-  const R = input[5]!;
-  const h = input[6]!;
-  const ee = input[7]!;
-  const muS = input[8]!;
-  const muW = input[9]!;
-  const tol = input[10]!;
-  // The tuning constants as locals, read once per impact: a module-level binding is a context
-  // slot that the optimized code loads and checks at each use in the loop below.
-  const ratioGain = RATIO_GAIN;
-  const ratioMax = RATIO_MAX;
-  const ratioFloor = RATIO_FLOOR;
-  const maxSteps = EXPRESS_MAX_STEPS;
-  const s = (h - R) / R;
-  const c = Math.sqrt((1 - s) * (1 + s));
-  // The table's normal impulse stays positive (sinθ + μw cosθ u_I,y > 0 for every direction), and
-  // the impulse always pushes the ball out (dvy/dp < 0 for every pair of slip directions).
-  if (!(s > c * muW) || !(s * muW + muS * (s + c * muW) < c)) return 0;
-  const V = Math.sqrt(vx * vx + vy * vy);
-  const lim = EXPRESS_SLIP_MIN * V;
-  const min2 = lim * lim;
-  const ox = R * wx;
-  const oy = R * wy;
-  const oz = R * wz;
-  // A table slip that is zero (a ball rolling on the cloth, within ZERO_FRACTION of the speed,
-  // as the solver counts it) starts the impact with cushionSeriesRolling.
-  let rolling = false;
-  {
-    const ix = vx + s * oy - c * oz;
-    const iy = ox - s * vy;
-    const cx = vx - oy;
-    const cy = vy + ox;
-    const zero = ZERO_FRACTION * V;
-    if (!(ix * ix + iy * iy >= min2)) return 0;
-    if (cx * cx + cy * cy <= zero * zero) rolling = true;
-    else if (!(cx * cx + cy * cy >= min2)) return 0;
-  }
-  seriesConstants(K, s, c, muS, muW, lim);
-  Y[0] = vx;
-  Y[1] = vy;
-  Y[2] = ox;
-  Y[3] = oy;
-  Y[4] = oz;
-  Y[5] = 0;
-  // Error weights: the speeds against tol V, the work against tol V c vy (an error dW moves the
-  // end by dW / (c |vy|), as in the solver).
-  const iv = 1 / (EXPRESS_TOL_FACTOR * tol * V);
-  const iw = iv / (c * vy);
-  // The step is measured in L = vy / c (the frictionless compression's impulse), so that the
-  // series' last two terms, each made relative to it (a_k L^k), compare alike however fast the
-  // ball (the model is homogeneous in the speeds, and so is every decision here). No step is
-  // longer than 3L, half again the whole frictionless impact (2L): with little friction the
-  // last terms are tiny and say nothing of the impact's length. A ball rolling on the cloth into
-  // the cushion at a shallow angle rebounds after about 2.2L (the table's friction, its slip
-  // growing from zero, pushes the ball towards the cushion, so vy falls by less than c per unit
-  // impulse): at 2L those impacts took a second step for their last tenth (5-35°, natural roll:
-  // the grid's mean 6.74 steps, 6.64 now, errors unchanged).
-  const L = vy / c;
-  const L2 = L * L;
-  const L4 = L2 * L2;
-  const w6 = L4 * L2;
-  const w7 = w6 * L;
-  const w8 = L4 * L4;
-  const hMax = 3 * L;
-  const ee2 = ee * ee;
-  // Twice the kinetic and rotational energy per unit mass (I = 2/5 M R²).
-  const e0 = vx * vx + vy * vy + 0.4 * (ox * ox + oy * oy + oz * oz);
-  let restitution = false;
-  let wEnd = 0;
-  let p = 0;
-  const q = Q;
-  // The state at a step's start and at its end, trading places after each step (no copy).
-  let y = Y;
-  let end = END;
-  for (let step = 1; step <= maxSteps; step++) {
-    // If this step leaves the branch, the solver continues from its start (handOver).
-    const rest0 = restitution;
-    const wEnd0 = wEnd;
-    const done = 1 - step; // 0 or minus the steps taken
-    if (!(rolling ? cushionSeriesRolling(y, q, K) : cushionSeries(y, q, K))) return handOver(y, rest0, wEnd0, p, done);
-    // The step from the series' two last terms (after Jorba and Zou 2005): the largest h with
-    // |a_k L^k| (h / L)^8 within the tolerance for k = 7 and 8, each variable against its weight.
-    // The largest weighted coefficients of p^6, p^7 and p^8 (q[9 i + k], SERIES_TERMS = 9: the
-    // indices are written out, a loop with computed indices cost 4% of an impact).
-    let n6 = Math.abs(q[51]!) * iw;
-    let n7 = Math.abs(q[52]!) * iw;
-    let n8 = Math.abs(q[53]!) * iw;
-    const a6 = Math.max(Math.abs(q[6]!), Math.abs(q[15]!), Math.abs(q[24]!), Math.abs(q[33]!), Math.abs(q[42]!)) * iv;
-    const a7 = Math.max(Math.abs(q[7]!), Math.abs(q[16]!), Math.abs(q[25]!), Math.abs(q[34]!), Math.abs(q[43]!)) * iv;
-    const a8 = Math.max(Math.abs(q[8]!), Math.abs(q[17]!), Math.abs(q[26]!), Math.abs(q[35]!), Math.abs(q[44]!)) * iv;
-    if (a6 > n6) n6 = a6;
-    if (a7 > n7) n7 = a7;
-    if (a8 > n8) n8 = a8;
-    n6 *= w6;
-    n7 *= w7;
-    n8 *= w8;
-    const n = n7 > n8 ? n7 : n8;
-    const t = Math.sqrt(Math.sqrt(Math.sqrt(n))); // L / (the last terms' step)
-    let dp = n > 0 ? L / t : hMax;
-    // The ratio test: with the terms falling by r = n8 / n7 an order (in units of L; n8 floored,
-    // below; each n_k is the largest over the variables, so r may mix two of them), the
-    // series' tail past p^8 at x = h / L is about n8 x^8 · x r / (1 - x r), a geometric series,
-    // which on most steps is far below the last terms themselves. The step where that tail meets
-    // the tolerance, with x r / (1 - x r) taken at the last terms' step x0 = 1 / t:
-    // x^8 = g n7 / n8² with g = (1 - x0 r) / x0 = t - r, so x = (n7 / n8²)^(1/8) g^(1/8), the
-    // first factor's square roots beside t's and g^(1/8) by its Padé approximant
-    // (7 + 9g) / (9 + 7g) (g > 1/4 here, as x0 < 2 and x0 r < 1/2: within 2.4% up to g = 4,
-    // above g^(1/8) below g = 1 and below it above); at most RATIO_GAIN x0, with x r <= RATIO_MAX,
-    // and only when x0 r < RATIO_MAX. Taken at x0, the factor understates the tail at the longer
-    // x, by up to 2 at the caps: the halved tolerance (EXPRESS_TOL_FACTOR) covers it. On the
-    // benchmark grid (paper constants) 296 of the 528 impacts end on this path in at most three
-    // steps, where 200 did.
-    // The last term's level for the test: at least RATIO_FLOOR of the two before's extrapolation,
-    // n7² / n6 (compared without a division, which only the rare floor needs; n6 = 0 makes the
-    // floor infinite, and the test then keeps x0).
-    const f8 = ratioFloor * n7 * n7;
-    const m8 = n8 * n6 < f8 ? f8 / n6 : n8;
-    if (m8 > 0 && n7 > 0 && dp < hMax) {
-      const r = m8 / n7;
-      if (r < ratioMax * t) {
-        const g = t - r;
-        let x = Math.sqrt(Math.sqrt(Math.sqrt(n7 / (m8 * m8)))) * ((7 + 9 * g) / (9 + 7 * g));
-        if (x * r > ratioMax) x = ratioMax / r;
-        const xt = x * t; // x / x0
-        if (xt > ratioGain) dp = (ratioGain * L) / t;
-        else if (xt > 1) dp = x * L;
-      }
-    }
-    if (!(dp <= hMax)) dp = hMax;
-    // A shrinking slip is not carried below EXPRESS_SLIP_MIN by a step, as predicted from its
-    // rate along itself (as the solver aims its steps at a slip's zero): a slip closing on zero
-    // nearly head-on makes the series' last terms small however near the zero is (its direction
-    // flips across a width that those terms cannot see), and past it the series would go on
-    // slipping where the contact sticks. Where that leaves less than a quarter step, the solver
-    // continues from here.
-    const cut = q[54]!; // q[SERIES_CUT]
-    if (cut < dp) {
-      if (cut < 0.25 * dp) return handOver(y, rest0, wEnd0, p, done);
-      dp = cut;
-    }
-    let from = 0;
-    // vy and the work at the step's end first: when restitution ends inside the step, the rest
-    // of the end is never needed (the result is evaluated where it ends).
-    q[56] = dp; // q[SERIES_AT]
-    cushionSeriesEnd(q, end);
-    if (!restitution && end[1]! <= 0) {
-      from = compressionEnd(q, dp, c, ee2 === 0 ? ROOT_MOVE : EVENT_DONE);
-      const wc = EV[2]!;
-      wEnd = wc - ee2 * wc;
-      restitution = true;
-      if (ee2 === 0) return finish(q, from, e0) ? step : handOver(y, rest0, wEnd0, p, done);
-    }
-    if (restitution) {
-      if (end[5]! <= wEnd) {
-        const t = restitutionEnd(q, wEnd, from, dp, c);
-        return finish(q, t, e0) ? step : handOver(y, rest0, wEnd0, p, done);
-      }
-      if (end[1]! >= 0) return handOver(y, rest0, wEnd0, p, done); // vy back at zero: stalled (the solver decides)
-    }
-    q[56] = dp; // (the roots above move it)
-    cushionSeriesRest(q, end);
-    // The slips at the step's end only: with the cut above, a slip whose closest approach to zero
-    // is below the threshold reaches the step's end before it (to first order in the step), so a
-    // dip inside the step shows at its end. (A check in the middle as well never fired over
-    // 217,836 impacts, random and structured, and cost 9% of the time.)
-    if (!slipsAbove(end, s, c, min2)) return handOver(y, rest0, wEnd0, p, done);
-    rolling = false;
-    const start = y;
-    y = end;
-    end = start;
-    p += dp;
-  }
-  return handOver(y, restitution, wEnd, p, -maxSteps);
-}
-
+export const expressImpact: () => number = EXPRESS.impact;
 /**
- * Records where the solver continues (EXPRESS_HANDOVER, and the state from in EXPRESS_FROM) and
- * returns code.
+ * The end of compression in a step of length dp of the series in EXPRESS_SERIES.q (see
+ * compressionEnd inside expressKernel), with the work there in EXPRESS_EVENT[2].
  */
-function handOver(from: Float64Array, restitution: boolean, wEnd: number, p: number, code: number): number {
-  if (from !== Y) Y.set(from);
-  const h = EXPRESS_HANDOVER;
-  h.restitution = restitution;
-  h.wEnd = wEnd;
-  h.p = p;
-  return code;
-}
-
+export const compressionEnd: (dp: number, c: number, done: number) => number = EXPRESS.compressionEnd;
+/** The end of restitution in [lo, hi] of a step of length hi of the series in EXPRESS_SERIES.q. */
+export const restitutionEnd: (target: number, lo: number, hi: number, c: number) => number = EXPRESS.restitutionEnd;
+/** The series kernel the express path steps with (its arrays and functions). */
+export const EXPRESS_SERIES: CushionSeriesKernel = EXPRESS.sk;
 /**
- * Where the work's series without its terms above p² falls to target (the work is nearly
- * quadratic in p: its rate c vy is nearly linear), as a start for restitutionEnd; -1 when it
- * does not.
+ * The express path's input, written by the caller: [vx, vy, wx, wy, wz, R, h, e_e, μs, μw, tol]
+ * (tol the solver's tolerance, relative to the speed), and the mass after them, which the
+ * express path does not need (the caller's solver does). An array rather than eleven arguments:
+ * a number passed to a function that is not inlined is boxed, a heap allocation each (4% of an
+ * impact, measured side by side).
  */
-function workStart(q: Float64Array, target: number): number {
-  const a = q[47]!; // the work's first three coefficients (q[9 i + k], i = 5)
-  const b = q[46]!;
-  const c0 = q[45]! - target;
-  // a p² + b p + c0 = 0 with a < 0 (vy falls) and c0 > 0: the positive root, without cancellation.
-  const disc = b * b - 4 * a * c0;
-  if (!(a < 0) || !(disc >= 0)) return -1;
-  const sq = Math.sqrt(disc);
-  return b >= 0 ? (-b - sq) / (2 * a) : (2 * c0) / (sq - b);
-}
-
+export const EXPRESS_IN: Float64Array = EXPRESS.input;
+/** The express result, in the internal variables [vx, vy, R ωx, R ωy, R ωz, W]. */
+export const EXPRESS_OUT: Float64Array = EXPRESS.sk.out;
+/** The state at the start of the step the express path left on (see EXPRESS_HANDOVER). */
+export const EXPRESS_FROM: Float64Array = EXPRESS.sk.start;
+/** vy, dvy/dp and W at the point of the last event evaluation. */
+export const EXPRESS_EVENT: Float64Array = EXPRESS.sk.ev;
 /**
- * The result at p = t into EXPRESS_OUT; false (the solver continues from the step's start) when
- * it has more kinetic and rotational energy than e0 (the same sum at the start). The model only
- * dissipates; near grazing, with e_e near 1, it dissipates so little that the series' error
- * could show as a gain, which the solver, stepping more finely there, does not make.
+ * Where the solver continues an impact the express path left after some steps: the state
+ * (internal variables, EXPRESS_FROM), whether compression has ended, the work's target and the
+ * impulse per unit mass so far.
  */
-function finish(q: Float64Array, t: number, e0: number): boolean {
-  const o = EXPRESS_OUT;
-  q[56] = t; // q[SERIES_AT]
-  cushionSeriesAt(q, o);
-  return o[0]! * o[0]! + o[1]! * o[1]! + 0.4 * (o[2]! * o[2]! + o[3]! * o[3]! + o[4]! * o[4]!) <= e0;
-}
+export const EXPRESS_HANDOVER: { restitution: boolean; wEnd: number; p: number } = EXPRESS.handover;

@@ -9,13 +9,11 @@ import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { cushionImpactSolver } from '../../shared/physics/cushion.ts';
 import {
-  compressionEnd, EVENT_DONE, EXPRESS_EVENT, EXPRESS_HANDOVER, EXPRESS_IN, EXPRESS_OUT, EXPRESS_SLIP_MIN, expressImpact,
-  restitutionEnd, SERIES_CONSTANTS, seriesConstants,
+  compressionEnd, EVENT_DONE, EXPRESS_EVENT, EXPRESS_HANDOVER, EXPRESS_IN, EXPRESS_OUT, EXPRESS_SERIES, EXPRESS_SLIP_MIN,
+  expressImpact, restitutionEnd, seriesConstants,
 } from '../../shared/physics/cushion-express.ts';
 import { CushionModel } from '../../shared/physics/cushion-model.ts';
-import {
-  cushionSeries, cushionSeriesAt, cushionSeriesEnd, cushionSeriesRest, SERIES_AT, SERIES_CUT, SERIES_LENGTH, SERIES_TERMS,
-} from '../../shared/physics/cushion-series.ts';
+import { SERIES_AT, SERIES_CUT, SERIES_LENGTH, SERIES_TERMS } from '../../shared/physics/cushion-series.ts';
 import { cushionImpact } from '../../shared/physics/index.ts';
 import type { CushionParams, CushionState } from '../../shared/physics/index.ts';
 import { CUSHION_SERIES_FILE, CUSHION_SERIES_SOURCE } from '../../scripts/gen-cushion-series.ts';
@@ -24,20 +22,30 @@ import { issueImpact } from '../support/cushion-arbitraries.ts';
 import { referenceRebound } from '../support/cushion-reference.ts';
 
 const NT = SERIES_TERMS;
+// The express path's own series kernel (its arrays are shared: each test fills them and reads
+// them before the next impact).
+const S = EXPRESS_SERIES;
+const q = S.q;
 
-/** The series q at p = t into out. */
-function at(q: Float64Array, t: number, out: Float64Array): void {
-  q[SERIES_AT] = t;
-  cushionSeriesAt(q, out);
+/** The series about the internal state y into q (false: the table's normal impulse would not be positive). */
+function seriesAbout(y: Float64Array): boolean {
+  S.start.set(y);
+  return S.series();
 }
 
-/** The series' constants, as expressImpact sets them (no cut: lim 0). */
+/** The series q at p = t into out. */
+function at(t: number, out: Float64Array): void {
+  q[SERIES_AT] = t;
+  S.valueAt();
+  out.set(S.out);
+}
+
+/** The series' constants, as expressImpact sets them (no cut: lim 0), into the kernel's. */
 function constants(p: CushionParams): { s: number; c: number; k: Float64Array } {
   const s = (p.h - p.R) / p.R;
   const c = Math.sqrt((1 - s) * (1 + s));
-  const k = new Float64Array(SERIES_CONSTANTS);
-  seriesConstants(k, s, c, p.muS, p.muW, 0);
-  return { s, c, k };
+  seriesConstants(S.k, s, c, p.muS, p.muW, 0);
+  return { s, c, k: S.k };
 }
 
 function internal(st: CushionState, R: number): Float64Array {
@@ -80,8 +88,7 @@ describe('cushion series', () => {
       for (const [alpha, kT, kS] of [[30, 0, 1], [60, 2, -1], [10, -1, 2], [80, 0.5, 0]] as const) {
         const st = paperState(1, alpha, kT, kS, p.R);
         const y0 = internal(st, p.R);
-        const q = new Float64Array(SERIES_LENGTH);
-        expect(cushionSeries(y0, q, k)).toBe(true);
+        expect(seriesAbout(y0)).toBe(true);
         // Classic RK4 with the model's derivative over a short impulse, to rounding.
         const span = 0.05 * st.vy / c;
         const n = 400;
@@ -115,19 +122,17 @@ describe('cushion series', () => {
   });
 
   it('is evaluated at a step\'s end in two parts (vy and the work, then the rest) with the bits of the whole', () => {
-    const q = new Float64Array(SERIES_LENGTH);
     const whole = new Float64Array(6);
-    const parts = new Float64Array(6);
+    const parts = S.end;
     fc.assert(
       fc.property(issueImpact, fc.double({ min: 0, max: 3, noNaN: true }), (g, x) => {
         const { k } = constants(g.params);
-        if (!cushionSeries(internal(g.state, g.params.R), q, k)) return;
-        q[SERIES_AT] = (x * g.state.vy) / k[1]!;
-        cushionSeriesAt(q, whole);
+        if (!seriesAbout(internal(g.state, g.params.R))) return;
+        at((x * g.state.vy) / k[1]!, whole);
         parts.fill(NaN);
-        cushionSeriesEnd(q, parts);
+        S.endFirst();
         expect([parts[1], parts[5]]).toEqual([whole[1], whole[5]]);
-        cushionSeriesRest(q, parts);
+        S.endRest();
         expect(Array.from(parts)).toEqual(Array.from(whole));
       }),
       { numRuns: 500, seed: 5 },
@@ -136,12 +141,12 @@ describe('cushion series', () => {
 });
 
 /** Where variable i of q, above target at lo and at or below it at hi, falls to it: bisection to rounding. */
-function bisect(q: Float64Array, i: number, target: number, lo: number, hi: number): number {
+function bisect(i: number, target: number, lo: number, hi: number): number {
   const y = new Float64Array(6);
   for (let n = 0; n < 200 && hi - lo > 0; n++) {
     const m = 0.5 * (lo + hi);
     if (m === lo || m === hi) break;
-    at(q, m, y);
+    at(m, y);
     if (y[i]! > target) lo = m;
     else hi = m;
   }
@@ -160,34 +165,33 @@ describe('express path: the ends of the phases on the series', () => {
     let rootC0 = 0; // Newton's method to 1e-6 (e_e = 0), relative to the step
     let rootR = 0; // Halley's method to EVENT_DONE, relative to the step
     for (const [, p] of TABLE_PARAMS) {
-      const { c, k } = constants(p);
+      const { c } = constants(p);
       for (const g of benchGrid(p.R).filter((c, i) => i % 5 === 0 && c.kT !== 1)) {
-        const q = new Float64Array(SERIES_LENGTH);
         const y = new Float64Array(6);
-        if (!cushionSeries(internal(g.state, p.R), q, k)) continue;
+        if (!seriesAbout(internal(g.state, p.R))) continue;
         const dp = 1.3 * (-q[NT]! / q[NT + 1]!);
-        at(q, dp, y);
+        at(dp, y);
         if (!(dp > 0) || !(y[1]! <= 0)) continue;
         compressions++;
-        const pc = bisect(q, 1, 0, 0, dp);
-        at(q, pc, y);
+        const pc = bisect(1, 0, 0, dp);
+        at(pc, y);
         const wc = y[5]!;
-        rootC = Math.max(rootC, Math.abs(compressionEnd(q, dp, c, EVENT_DONE) - pc) / dp);
+        rootC = Math.max(rootC, Math.abs(compressionEnd(dp, c, EVENT_DONE) - pc) / dp);
         workC = Math.max(workC, Math.abs(EXPRESS_EVENT[2]! - wc) / wc);
-        rootC0 = Math.max(rootC0, Math.abs(compressionEnd(q, dp, c, 1e-6) - pc) / dp);
+        rootC0 = Math.max(rootC0, Math.abs(compressionEnd(dp, c, 1e-6) - pc) / dp);
         const end = 1.5 * pc;
         let falls = true;
         let last = wc;
         for (let j = 1; j <= 50; j++) {
-          at(q, pc + ((end - pc) * j) / 50, y);
+          at(pc + ((end - pc) * j) / 50, y);
           falls &&= y[5]! < last;
           last = y[5]!;
         }
         if (!falls) continue;
         restitutions++;
         const target = 0.5 * (wc + last);
-        const pe = bisect(q, 5, target, pc, end);
-        rootR = Math.max(rootR, Math.abs(restitutionEnd(q, target, pc, end, c) - pe) / end);
+        const pe = bisect(5, target, pc, end);
+        rootR = Math.max(rootR, Math.abs(restitutionEnd(target, pc, end, c) - pe) / end);
       }
     }
     expect(compressions).toBeGreaterThan(200);
