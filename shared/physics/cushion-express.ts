@@ -132,6 +132,9 @@ function expressKernel(): ExpressKernel {
   // The input (EXPRESS_IN), 96 bytes: an ArrayBuffer of its own (see cushionSeriesKernel).
   const IN = new Float64Array(new ArrayBuffer(12 * 8));
   const HANDOVER = { restitution: false, wEnd: 0, p: 0 };
+  // The roots' arguments, in, and the root, out at 4 (a number passed to or returned by a function
+  // that is not inlined is boxed: a heap allocation each).
+  const ARG = new Float64Array(new ArrayBuffer(5 * 8));
   /**
    * The end of compression in a step of length dp whose series q takes vy from above 0 to 0 or
    * below: the impulse of vy = 0, with the work there in EXPRESS_EVENT[2]. From the root of vy's
@@ -140,7 +143,10 @@ function expressKernel(): ExpressKernel {
    * (dW/dp = c vy: the second-order Taylor step to the root, its error of order dx³), from the
    * same pass.
    */
-  function compressionEnd(dp: number, c: number, done: number): number {
+  function compressionEnd(): void {
+    const dp = ARG[0]!;
+    const c = ARG[1]!;
+    const done = ARG[2]!;
     const a0 = q[9]!; // vy's first three coefficients (q[9 i + k], i = 1)
     const a1 = q[10]!;
     const a2 = q[11]!;
@@ -164,7 +170,8 @@ function expressKernel(): ExpressKernel {
       if (next >= lo && next <= hi && d < 0) {
         if (Math.abs(dx) <= eps) {
           ev[2] = ev[2]! - 0.5 * c * v * dx;
-          return next;
+          ARG[4] = next;
+          return;
         }
         x = next;
       } else {
@@ -172,7 +179,7 @@ function expressKernel(): ExpressKernel {
       }
       if (hi - lo <= 1e-12 * dp) break; // (bisection alone: to rounding)
     }
-    return x;
+    ARG[4] = x;
   }
 
   /**
@@ -182,7 +189,11 @@ function expressKernel(): ExpressKernel {
    * bracket by bisection, from the root of the work's quadratic part (workStart) or the bracket's
    * middle, until its correction is below EVENT_DONE of the step.
    */
-  function restitutionEnd(target: number, lo: number, hi: number, c: number): number {
+  function restitutionEnd(): void {
+    const target = ARG[0]!;
+    let lo = ARG[1]!;
+    let hi = ARG[2]!;
+    const c = ARG[3]!;
     const dp = hi;
     const eps = EVENT_DONE * dp;
     const x0 = workStart(target);
@@ -191,7 +202,10 @@ function expressKernel(): ExpressKernel {
       q[56] = x; // q[SERIES_AT]
       event();
       const f = ev[2]! - target;
-      if (f === 0) return x;
+      if (f === 0) {
+        ARG[4] = x;
+        return;
+      }
       if (f > 0) lo = x;
       else hi = x;
       const f1 = c * ev[0]!;
@@ -199,14 +213,17 @@ function expressKernel(): ExpressKernel {
       const dx = den > 0 ? (f * f1) / den : f / f1;
       const next = x - dx;
       if (next > lo && next < hi) {
-        if (Math.abs(dx) <= eps) return next;
+        if (Math.abs(dx) <= eps) {
+          ARG[4] = next;
+          return;
+        }
         x = next;
       } else {
         x = 0.5 * (lo + hi);
       }
       if (hi - lo <= 1e-12 * dp) break; // (bisection alone: to rounding)
     }
-    return x;
+    ARG[4] = x;
   }
 
   /** Whether both slips at the step's end are at least √min2. */
@@ -373,7 +390,11 @@ function expressKernel(): ExpressKernel {
       q[56] = dp; // q[SERIES_AT]
       endFirst();
       if (!restitution && end[1]! <= 0) {
-        from = compressionEnd(dp, c, ee2 === 0 ? ROOT_MOVE : EVENT_DONE);
+        ARG[0] = dp;
+        ARG[1] = c;
+        ARG[2] = ee2 === 0 ? ROOT_MOVE : EVENT_DONE;
+        compressionEnd();
+        from = ARG[4]!;
         const wc = ev[2]!;
         wEnd = wc - ee2 * wc;
         restitution = true;
@@ -381,7 +402,12 @@ function expressKernel(): ExpressKernel {
       }
       if (restitution) {
         if (end[5]! <= wEnd) {
-          const t = restitutionEnd(wEnd, from, dp, c);
+          ARG[0] = wEnd;
+          ARG[1] = from;
+          ARG[2] = dp;
+          ARG[3] = c;
+          restitutionEnd();
+          const t = ARG[4]!;
           return finish(t, e0) ? step : handOver(rest0, wEnd0, p, done);
         }
         if (end[1]! >= 0) return handOver(rest0, wEnd0, p, done); // vy back at zero: stalled (the solver decides)
@@ -446,7 +472,24 @@ function expressKernel(): ExpressKernel {
     return o[0]! * o[0]! + o[1]! * o[1]! + 0.4 * (o[2]! * o[2]! + o[3]! * o[3]! + o[4]! * o[4]!) <= e0;
   }
 
-  return { sk, input: IN, handover: HANDOVER, impact: expressImpact, compressionEnd, restitutionEnd };
+  return {
+    sk, input: IN, handover: HANDOVER, impact: expressImpact,
+    compressionEnd: (dp: number, c: number, done: number): number => {
+      ARG[0] = dp;
+      ARG[1] = c;
+      ARG[2] = done;
+      compressionEnd();
+      return ARG[4]!;
+    },
+    restitutionEnd: (target: number, lo: number, hi: number, c: number): number => {
+      ARG[0] = target;
+      ARG[1] = lo;
+      ARG[2] = hi;
+      ARG[3] = c;
+      restitutionEnd();
+      return ARG[4]!;
+    },
+  };
 }
 
 const EXPRESS = expressKernel();
