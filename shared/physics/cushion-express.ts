@@ -135,6 +135,18 @@ function expressKernel(): ExpressKernel {
   // The roots' arguments, in, and the root, out at 4 (a number passed to or returned by a function
   // that is not inlined is boxed: a heap allocation each).
   const ARG = new Float64Array(new ArrayBuffer(5 * 8));
+  // The tuning constants as constants of the closure, which the compiler embeds: a module-level
+  // binding is a context slot (the bundler makes a module's `const` a `var`) that the optimized
+  // code loads, and checks at each use in the loop.
+  const ratioGain = RATIO_GAIN;
+  const ratioMax = RATIO_MAX;
+  const ratioFloor = RATIO_FLOOR;
+  const maxSteps = EXPRESS_MAX_STEPS;
+  const slipMin = EXPRESS_SLIP_MIN;
+  const zeroFraction = ZERO_FRACTION;
+  const tolFactor = EXPRESS_TOL_FACTOR;
+  const rootMove = ROOT_MOVE;
+  const eventDone = EVENT_DONE;
   /**
    * The end of compression in a step of length dp whose series q takes vy from above 0 to 0 or
    * below: the impulse of vy = 0, with the work there in EXPRESS_EVENT[2]. From the root of vy's
@@ -195,7 +207,7 @@ function expressKernel(): ExpressKernel {
     let hi = ARG[2]!;
     const c = ARG[3]!;
     const dp = hi;
-    const eps = EVENT_DONE * dp;
+    const eps = eventDone * dp;
     const x0 = workStart(target);
     let x = x0 > lo && x0 < hi ? x0 : 0.5 * (lo + hi);
     for (let it = 0; it < 60; it++) {
@@ -255,19 +267,13 @@ function expressKernel(): ExpressKernel {
     const muS = input[8]!;
     const muW = input[9]!;
     const tol = input[10]!;
-    // The tuning constants as locals, read once per impact: a module-level binding is a context
-    // slot that the optimized code loads and checks at each use in the loop below.
-    const ratioGain = RATIO_GAIN;
-    const ratioMax = RATIO_MAX;
-    const ratioFloor = RATIO_FLOOR;
-    const maxSteps = EXPRESS_MAX_STEPS;
     const s = (h - R) / R;
     const c = Math.sqrt((1 - s) * (1 + s));
     // The table's normal impulse stays positive (sinθ + μw cosθ u_I,y > 0 for every direction), and
     // the impulse always pushes the ball out (dvy/dp < 0 for every pair of slip directions).
     if (!(s > c * muW) || !(s * muW + muS * (s + c * muW) < c)) return 0;
     const V = Math.sqrt(vx * vx + vy * vy);
-    const lim = EXPRESS_SLIP_MIN * V;
+    const lim = slipMin * V;
     const min2 = lim * lim;
     const ox = R * wx;
     const oy = R * wy;
@@ -280,7 +286,7 @@ function expressKernel(): ExpressKernel {
       const iy = ox - s * vy;
       const cx = vx - oy;
       const cy = vy + ox;
-      const zero = ZERO_FRACTION * V;
+      const zero = zeroFraction * V;
       if (!(ix * ix + iy * iy >= min2)) return 0;
       if (cx * cx + cy * cy <= zero * zero) rolling = true;
       else if (!(cx * cx + cy * cy >= min2)) return 0;
@@ -294,7 +300,7 @@ function expressKernel(): ExpressKernel {
     start[5] = 0;
     // Error weights: the speeds against tol V, the work against tol V c vy (an error dW moves the
     // end by dW / (c |vy|), as in the solver).
-    const iv = 1 / (EXPRESS_TOL_FACTOR * tol * V);
+    const iv = 1 / (tolFactor * tol * V);
     const iw = iv / (c * vy);
     // The step is measured in L = vy / c (the frictionless compression's impulse), so that the
     // series' last two terms, each made relative to it (a_k L^k), compare alike however fast the
@@ -392,7 +398,7 @@ function expressKernel(): ExpressKernel {
       if (!restitution && end[1]! <= 0) {
         ARG[0] = dp;
         ARG[1] = c;
-        ARG[2] = ee2 === 0 ? ROOT_MOVE : EVENT_DONE;
+        ARG[2] = ee2 === 0 ? rootMove : eventDone;
         compressionEnd();
         from = ARG[4]!;
         const wc = ev[2]!;
