@@ -102,6 +102,7 @@ interface ExpressKernel {
   readonly sk: CushionSeriesKernel;
   readonly input: Float64Array;
   readonly handover: { restitution: boolean; wEnd: number; p: number };
+  readonly from: Float64Array;
   impact(): number;
   compressionEnd(dp: number, c: number, done: number): number;
   restitutionEnd(target: number, lo: number, hi: number, c: number): number;
@@ -135,6 +136,10 @@ function expressKernel(): ExpressKernel {
   // The roots' arguments, in, and the root, out at 4 (a number passed to or returned by a function
   // that is not inlined is boxed: a heap allocation each).
   const ARG = new Float64Array(new ArrayBuffer(5 * 8));
+  // sinθ and cosθ of the impact (for stateOf).
+  const GEOM = new Float64Array(new ArrayBuffer(2 * 8));
+  // The state the solver continues from (EXPRESS_FROM).
+  const FROM = new Float64Array(new ArrayBuffer(6 * 8));
   // The tuning constants as constants of the closure, which the compiler embeds: a module-level
   // binding is a context slot (the bundler makes a module's `const` a `var`) that the optimized
   // code loads, and checks at each use in the loop.
@@ -241,10 +246,10 @@ function expressKernel(): ExpressKernel {
   /** Whether both slips at the step's end are at least √min2. */
   function slipsAbove(s: number, c: number, min2: number): boolean {
     const z = end;
-    const ix = z[0]! + s * z[3]! - c * z[4]!;
-    const iy = z[2]! - s * z[1]!;
-    const cx = z[0]! - z[3]!;
-    const cy = z[1]! + z[2]!;
+    const ix = z[0]!;
+    const iy = z[2]!;
+    const cx = z[3]!;
+    const cy = iy + (1 + s) * z[1]!;
     return ix * ix + iy * iy >= min2 && cx * cx + cy * cy >= min2;
   }
 
@@ -292,10 +297,13 @@ function expressKernel(): ExpressKernel {
       else if (!(cx * cx + cy * cy >= min2)) return 0;
     }
     seriesConstants(K, s, c, muS, muW, lim);
-    start[0] = vx;
+    GEOM[0] = s;
+    GEOM[1] = c;
+    // The series' variables (SERIES_VARIABLES): e_I, vy, e_C,x, R ωz and the work.
+    start[0] = vx + s * oy - c * oz;
     start[1] = vy;
-    start[2] = ox;
-    start[3] = oy;
+    start[2] = ox - s * vy;
+    start[3] = vx - oy;
     start[4] = oz;
     start[5] = 0;
     // Error weights: the speeds against tol V, the work against tol V c vy (an error dW moves the
@@ -442,6 +450,7 @@ function expressKernel(): ExpressKernel {
    * returns code.
    */
   function handOver(restitution: boolean, wEnd: number, p: number, code: number): number {
+    stateOf(start, FROM);
     const h = HANDOVER;
     h.restitution = restitution;
     h.wEnd = wEnd;
@@ -471,15 +480,36 @@ function expressKernel(): ExpressKernel {
    * dissipates; near grazing, with e_e near 1, it dissipates so little that the series' error
    * could show as a gain, which the solver, stepping more finely there, does not make.
    */
+  /**
+   * The internal state y = [vx, vy, R ωx, R ωy, R ωz, W] of the series' variables z (e_I,x, vy,
+   * e_I,y, e_C,x, R ωz, W; SERIES_VARIABLES), for sinθ and cosθ in GEOM: R ωx = e_I,y + sinθ vy,
+   * and from e_I,x = vx + sinθ R ωy - cosθ R ωz and e_C,x = vx - R ωy,
+   * R ωy = (e_I,x + cosθ R ωz - e_C,x) / (1 + sinθ). z and y may be the same array.
+   */
+  function stateOf(z: Float64Array, y: Float64Array): void {
+    const s = GEOM[0]!;
+    const c = GEOM[1]!;
+    const vy = z[1]!;
+    const oz = z[4]!;
+    const oy = (z[0]! + c * oz - z[3]!) / (1 + s);
+    y[0] = z[3]! + oy;
+    y[1] = vy;
+    y[2] = z[2]! + s * vy;
+    y[3] = oy;
+    y[4] = oz;
+    y[5] = z[5]!;
+  }
+
   function finish(t: number, e0: number): boolean {
     const o = out;
     q[56] = t; // q[SERIES_AT]
     valueAt();
+    stateOf(o, o);
     return o[0]! * o[0]! + o[1]! * o[1]! + 0.4 * (o[2]! * o[2]! + o[3]! * o[3]! + o[4]! * o[4]!) <= e0;
   }
 
   return {
-    sk, input: IN, handover: HANDOVER, impact: expressImpact,
+    sk, input: IN, handover: HANDOVER, from: FROM, impact: expressImpact,
     compressionEnd: (dp: number, c: number, done: number): number => {
       ARG[0] = dp;
       ARG[1] = c;
@@ -527,7 +557,7 @@ export const EXPRESS_IN: Float64Array = EXPRESS.input;
 /** The express result, in the internal variables [vx, vy, R ωx, R ωy, R ωz, W]. */
 export const EXPRESS_OUT: Float64Array = EXPRESS.sk.out;
 /** The state at the start of the step the express path left on (see EXPRESS_HANDOVER). */
-export const EXPRESS_FROM: Float64Array = EXPRESS.sk.start;
+export const EXPRESS_FROM: Float64Array = EXPRESS.from;
 /** vy, dvy/dp and W at the point of the last event evaluation. */
 export const EXPRESS_EVENT: Float64Array = EXPRESS.sk.ev;
 /**
