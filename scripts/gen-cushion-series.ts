@@ -90,7 +90,7 @@ function emit(rolling: boolean): void {
     w(' * table\'s normal impulse is not positive.');
   } else {
     w(' * Fills q with the series about the variables in start: variable i\'s coefficient of p^k at');
-    w(` * q[${N + 1} i + k], and q[SERIES_CUT]. k holds the constants (seriesConstants in`);
+    w(` * q[${N + 1} i + k], and q[SERIES_CUT]. k holds the constants (constants in`);
     w(' * cushion-express.ts). False, with q unspecified, when the table\'s normal impulse is not');
     w(' * positive at the start (its clamp at 0 would make the series wrong).');
   }
@@ -278,14 +278,14 @@ function rollingDirection(k: number): void {
   w(`  const uCy${k} = (wCy${k} - rC${k} * uCy0 - Sy${k}) * iC;`);
 }
 
-w('/** The series constants\' count (seriesConstants in cushion-express.ts). */');
+w('/** The series constants\' count (constants in cushion-express.ts). */');
 w('export const SERIES_CONSTANTS = 13;');
 w('');
 w('/** The series kernel: its arrays and the functions that fill and evaluate them. */');
 w('export interface CushionSeriesKernel {');
 w('  /** The series: variable i\'s coefficient of p^k at q[SERIES_TERMS i + k], then the cut, the work\'s last term and the point to evaluate at. */');
 w('  readonly q: Float64Array;');
-w('  /** The constants (seriesConstants in cushion-express.ts). */');
+w('  /** The constants (constants in cushion-express.ts). */');
 w('  readonly k: Float64Array;');
 w('  /** The state a series starts from. */');
 w('  readonly start: Float64Array;');

@@ -62,28 +62,6 @@ export const EXPRESS_SLIP_MIN = 0.05;
 export const EXPRESS_MAX_STEPS = 16;
 
 /**
- * The constants the series functions read (cushion-series.ts), for sinθ = s, cosθ = c, the
- * frictions and the slip speed lim at which a shrinking slip's cut is aimed (SERIES_CUT):
- * sinθ, cosθ, -μw, -μs μw cosθ, μs sinθ (the table's normal times -μs is k3 u_I,y - k4), then
- * the weights of u_I and h in the slips' rates (cushion-model.ts) and sinθ cosθ.
- */
-export function seriesConstants(k: Float64Array, s: number, c: number, muS: number, muW: number, lim: number): void {
-  k[0] = s;
-  k[1] = c;
-  k[2] = -muW;
-  k[3] = -(muS * c * muW);
-  k[4] = muS * s;
-  k[5] = -3.5 * muW;
-  k[6] = 1 - 2.5 * s;
-  k[7] = -(s * s + 2.5) * muW;
-  k[8] = 2.5 - s;
-  k[9] = -(1 - 2.5 * s) * muW;
-  k[10] = -(2.5 - s) * muW;
-  k[11] = s * c;
-  k[12] = lim;
-}
-
-/**
  * A root is taken as found when its last correction dx is within this fraction of the step.
  * The end of compression matters only through the work there, W_c, at its maximum
  * (dW/dp = c vy, exactly so on the series with the work's last term, SERIES_W_LAST): from x,
@@ -103,6 +81,7 @@ interface ExpressKernel {
   readonly input: Float64Array;
   readonly handover: { restitution: boolean; wEnd: number; p: number };
   readonly from: Float64Array;
+  seriesConstants(s: number, c: number, muS: number, muW: number, lim: number): void;
   impact(): number;
   compressionEnd(dp: number, c: number, done: number): number;
   restitutionEnd(target: number, lo: number, hi: number, c: number): number;
@@ -136,8 +115,8 @@ function expressKernel(): ExpressKernel {
   // The roots' arguments, in, and the root, out at 4 (a number passed to or returned by a function
   // that is not inlined is boxed: a heap allocation each).
   const ARG = new Float64Array(new ArrayBuffer(5 * 8));
-  // sinθ and cosθ of the impact (for stateOf).
-  const GEOM = new Float64Array(new ArrayBuffer(2 * 8));
+  // The impact's sinθ, cosθ, μs, μw and the slips' threshold (for constants and stateOf).
+  const GEOM = new Float64Array(new ArrayBuffer(5 * 8));
   // The state the solver continues from (EXPRESS_FROM).
   const FROM = new Float64Array(new ArrayBuffer(6 * 8));
   // The tuning constants as constants of the closure, which the compiler embeds: a module-level
@@ -296,9 +275,12 @@ function expressKernel(): ExpressKernel {
       if (cx * cx + cy * cy <= zero * zero) rolling = true;
       else if (!(cx * cx + cy * cy >= min2)) return 0;
     }
-    seriesConstants(K, s, c, muS, muW, lim);
     GEOM[0] = s;
     GEOM[1] = c;
+    GEOM[2] = muS;
+    GEOM[3] = muW;
+    GEOM[4] = lim;
+    constants();
     // The series' variables (SERIES_VARIABLES): e_I, vy, e_C,x, R ωz and the work.
     start[0] = vx + s * oy - c * oz;
     start[1] = vy;
@@ -481,10 +463,38 @@ function expressKernel(): ExpressKernel {
    * could show as a gain, which the solver, stepping more finely there, does not make.
    */
   /**
+   * The constants the series functions read (K, cushion-series.ts), for sinθ = s, cosθ = c, the
+   * frictions and the slip speed lim at which a shrinking slip's cut is aimed (SERIES_CUT), from
+   * GEOM: sinθ, cosθ, -μw, -μs μw cosθ, μs sinθ (the table's normal times -μs is k3 u_I,y - k4),
+   * then the weights of u_I and h in the slips' rates (cushion-model.ts) and sinθ cosθ. Without
+   * arguments: numbers passed to a function that is not inlined are boxed (expressImpact's
+   * inlining budget goes to the evaluations at each step).
+   */
+  function constants(): void {
+    const s = GEOM[0]!;
+    const c = GEOM[1]!;
+    const muS = GEOM[2]!;
+    const muW = GEOM[3]!;
+    K[0] = s;
+    K[1] = c;
+    K[2] = -muW;
+    K[3] = -(muS * c * muW);
+    K[4] = muS * s;
+    K[5] = -3.5 * muW;
+    K[6] = 1 - 2.5 * s;
+    K[7] = -(s * s + 2.5) * muW;
+    K[8] = 2.5 - s;
+    K[9] = -(1 - 2.5 * s) * muW;
+    K[10] = -(2.5 - s) * muW;
+    K[11] = s * c;
+    K[12] = GEOM[4]!;
+  }
+
+  /**
    * The internal state y = [vx, vy, R ωx, R ωy, R ωz, W] of the series' variables z (e_I,x, vy,
    * e_I,y, e_C,x, R ωz, W; SERIES_VARIABLES), for sinθ and cosθ in GEOM: R ωx = e_I,y + sinθ vy,
    * and from e_I,x = vx + sinθ R ωy - cosθ R ωz and e_C,x = vx - R ωy,
-   * R ωy = (e_I,x + cosθ R ωz - e_C,x) / (1 + sinθ). z and y may be the same array.
+   * R ωy = (e_I,x + cosθ R ωz - e_C,x) / (1 + sinθ).
    */
   function stateOf(z: Float64Array, y: Float64Array): void {
     const s = GEOM[0]!;
@@ -504,12 +514,28 @@ function expressKernel(): ExpressKernel {
     const o = out;
     q[56] = t; // q[SERIES_AT]
     valueAt();
-    stateOf(o, o);
+    // (stateOf written out on out, a constant of the closure: the compiler then embeds it.)
+    const sn = GEOM[0]!;
+    const cs = GEOM[1]!;
+    const vy = o[1]!;
+    const oz = o[4]!;
+    const oy = (o[0]! + cs * oz - o[3]!) / (1 + sn);
+    o[0] = o[3]! + oy;
+    o[2] = o[2]! + sn * vy;
+    o[3] = oy;
     return o[0]! * o[0]! + o[1]! * o[1]! + 0.4 * (o[2]! * o[2]! + o[3]! * o[3]! + o[4]! * o[4]!) <= e0;
   }
 
   return {
     sk, input: IN, handover: HANDOVER, from: FROM, impact: expressImpact,
+    seriesConstants: (s: number, c: number, muS: number, muW: number, lim: number): void => {
+      GEOM[0] = s;
+      GEOM[1] = c;
+      GEOM[2] = muS;
+      GEOM[3] = muW;
+      GEOM[4] = lim;
+      constants();
+    },
     compressionEnd: (dp: number, c: number, done: number): number => {
       ARG[0] = dp;
       ARG[1] = c;
@@ -544,6 +570,12 @@ export const expressImpact: () => number = EXPRESS.impact;
 export const compressionEnd: (dp: number, c: number, done: number) => number = EXPRESS.compressionEnd;
 /** The end of restitution in [lo, hi] of a step of length hi of the series in EXPRESS_SERIES.q. */
 export const restitutionEnd: (target: number, lo: number, hi: number, c: number) => number = EXPRESS.restitutionEnd;
+/**
+ * Sets the series kernel's constants (EXPRESS_SERIES.k) for sinθ = s, cosθ = c, the frictions and
+ * the slip speed lim at which a shrinking slip's cut is aimed, as expressImpact does.
+ */
+export const seriesConstants: (s: number, c: number, muS: number, muW: number, lim: number) => void =
+  EXPRESS.seriesConstants;
 /** The series kernel the express path steps with (its arrays and functions). */
 export const EXPRESS_SERIES: CushionSeriesKernel = EXPRESS.sk;
 /**

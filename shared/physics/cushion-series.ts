@@ -34,14 +34,14 @@ export const SERIES_AT = 56;
 /** The length of a series array. */
 export const SERIES_LENGTH = 57;
 
-/** The series constants' count (seriesConstants in cushion-express.ts). */
+/** The series constants' count (constants in cushion-express.ts). */
 export const SERIES_CONSTANTS = 13;
 
 /** The series kernel: its arrays and the functions that fill and evaluate them. */
 export interface CushionSeriesKernel {
   /** The series: variable i's coefficient of p^k at q[SERIES_TERMS i + k], then the cut, the work's last term and the point to evaluate at. */
   readonly q: Float64Array;
-  /** The constants (seriesConstants in cushion-express.ts). */
+  /** The constants (constants in cushion-express.ts). */
   readonly k: Float64Array;
   /** The state a series starts from. */
   readonly start: Float64Array;
@@ -75,7 +75,7 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
   const ev = new Float64Array(new ArrayBuffer(3 * 8));
   /**
    * Fills q with the series about the variables in start: variable i's coefficient of p^k at
-   * q[9 i + k], and q[SERIES_CUT]. k holds the constants (seriesConstants in
+   * q[9 i + k], and q[SERIES_CUT]. k holds the constants (constants in
    * cushion-express.ts). False, with q unspecified, when the table's normal impulse is not
    * positive at the start (its clamp at 0 would make the series wrong).
    */

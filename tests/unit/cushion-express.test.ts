@@ -54,7 +54,7 @@ function at(t: number, out: Float64Array): void {
 function constants(p: CushionParams): { s: number; c: number; k: Float64Array } {
   const s = (p.h - p.R) / p.R;
   const c = Math.sqrt((1 - s) * (1 + s));
-  seriesConstants(S.k, s, c, p.muS, p.muW, 0);
+  seriesConstants(s, c, p.muS, p.muW, 0);
   return { s, c, k: S.k };
 }
 
