@@ -75,6 +75,18 @@ export const EXPRESS_MAX_STEPS = 16;
  */
 export const EVENT_DONE = 1e-3;
 
+/**
+ * The largest of a coefficient's values in the state's variables (vx, vy, R ωx, R ωy, R ωz) from
+ * those of the series' (SERIES_VARIABLES; see stateOf): the step is chosen on the state's
+ * coefficients, as the tolerance is stated in them.
+ */
+function stateNorm(eIx: number, vy: number, eIy: number, eCx: number, oz: number, s: number, c: number): number {
+  const u = eIx + c * oz;
+  const i1 = 1 / (1 + s);
+  // (vx and R ωy, the longest to form, last: the maximum waits on them only at its end.)
+  return Math.max(Math.abs(vy), Math.abs(oz), Math.abs(eIy + s * vy), Math.abs((u + s * eCx) * i1), Math.abs((u - eCx) * i1));
+}
+
 /** The express path's kernel: made once (expressKernel), see cushionSeriesKernel. */
 interface ExpressKernel {
   readonly sk: CushionSeriesKernel;
@@ -327,9 +339,9 @@ function expressKernel(): ExpressKernel {
       let n6 = Math.abs(q[51]!) * iw;
       let n7 = Math.abs(q[52]!) * iw;
       let n8 = Math.abs(q[53]!) * iw;
-      const a6 = Math.max(Math.abs(q[6]!), Math.abs(q[15]!), Math.abs(q[24]!), Math.abs(q[33]!), Math.abs(q[42]!)) * iv;
-      const a7 = Math.max(Math.abs(q[7]!), Math.abs(q[16]!), Math.abs(q[25]!), Math.abs(q[34]!), Math.abs(q[43]!)) * iv;
-      const a8 = Math.max(Math.abs(q[8]!), Math.abs(q[17]!), Math.abs(q[26]!), Math.abs(q[35]!), Math.abs(q[44]!)) * iv;
+      const a6 = stateNorm(q[6]!, q[15]!, q[24]!, q[33]!, q[42]!, s, c) * iv;
+      const a7 = stateNorm(q[7]!, q[16]!, q[25]!, q[34]!, q[43]!, s, c) * iv;
+      const a8 = stateNorm(q[8]!, q[17]!, q[26]!, q[35]!, q[44]!, s, c) * iv;
       if (a6 > n6) n6 = a6;
       if (a7 > n7) n7 = a7;
       if (a8 > n8) n8 = a8;
