@@ -287,10 +287,8 @@ w('  /** The series: variable i\'s coefficient of p^k at q[SERIES_TERMS i + k], 
 w('  readonly q: Float64Array;');
 w('  /** The constants (constants in cushion-express.ts). */');
 w('  readonly k: Float64Array;');
-w('  /** The state a series starts from. */');
+w('  /** The variables a series starts from, where a step\'s end is evaluated (endFirst: vy and W; endRest: the other four). */');
 w('  readonly start: Float64Array;');
-w('  /** A step\'s end (endFirst: vy and W; endRest: the other four). */');
-w('  readonly end: Float64Array;');
 w('  /** The six values (valueAt). */');
 w('  readonly out: Float64Array;');
 w('  /** vy, dvy/dp and W (event). */');
@@ -315,7 +313,6 @@ w('// address and length and checks the index at each use.');
 w('const q = new Float64Array(new ArrayBuffer(SERIES_LENGTH * 8));');
 w('const k = new Float64Array(new ArrayBuffer(SERIES_CONSTANTS * 8));');
 w('const start = new Float64Array(new ArrayBuffer(6 * 8));');
-w('const end = new Float64Array(new ArrayBuffer(6 * 8));');
 w('const out = new Float64Array(new ArrayBuffer(6 * 8));');
 w('const ev = new Float64Array(new ArrayBuffer(3 * 8));');
 emit(false);
@@ -363,15 +360,15 @@ w('');
 // the step (then only the end of restitution is evaluated in full), then the other four when the
 // next step starts there. The same expressions as cushionSeriesAt's, so the same bits.
 evaluator(
-  'vy and the work W of q at p = q[SERIES_AT] into end[1] and end[5] (as cushionSeriesAt).',
+  'vy and the work W of q at p = q[SERIES_AT] into start[1] and start[5] (as cushionSeriesAt).',
   'cushionSeriesEnd',
-  [1, 5].map((i) => `end[${i}] = ${valueOf(i)}`),
+  [1, 5].map((i) => `start[${i}] = ${valueOf(i)}`),
 );
 w('');
 evaluator(
-  'The slips\' e_I,x, e_I,y, e_C,x and R ωz of q at p = q[SERIES_AT] into end[0], end[2], end[3], end[4] (as cushionSeriesAt).',
+  'The slips\' e_I,x, e_I,y, e_C,x and R ωz of q at p = q[SERIES_AT] into start[0], start[2], start[3], start[4] (as cushionSeriesAt).',
   'cushionSeriesRest',
-  [0, 2, 3, 4].map((i) => `end[${i}] = ${valueOf(i)}`),
+  [0, 2, 3, 4].map((i) => `start[${i}] = ${valueOf(i)}`),
 );
 w('');
 // The events' evaluation: vy with its slope and the work (the work's slope is c vy and its
@@ -388,7 +385,7 @@ evaluator(
 );
 
 w('return {');
-w('  q, k, start, end, out, ev, series: cushionSeries, seriesRolling: cushionSeriesRolling, valueAt: cushionSeriesAt,');
+w('  q, k, start, out, ev, series: cushionSeries, seriesRolling: cushionSeriesRolling, valueAt: cushionSeriesAt,');
 w('  endFirst: cushionSeriesEnd, endRest: cushionSeriesRest, event: cushionSeriesEvent,');
 w('};');
 for (let i = factoryStart; i < out.length; i++) if (out[i] !== '') out[i] = `  ${out[i]}`;

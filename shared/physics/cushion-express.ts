@@ -112,7 +112,6 @@ function expressKernel(): ExpressKernel {
   const q = sk.q;
   const K = sk.k;
   const start = sk.start;
-  const end = sk.end;
   const out = sk.out;
   const ev = sk.ev;
   const series = sk.series;
@@ -129,7 +128,9 @@ function expressKernel(): ExpressKernel {
   const ARG = new Float64Array(new ArrayBuffer(5 * 8));
   // The impact's sinθ, cosθ, μs, μw and the slips' threshold (for constants and stateOf).
   const GEOM = new Float64Array(new ArrayBuffer(5 * 8));
-  // The state the solver continues from (EXPRESS_FROM).
+  // The variables at the start of the step being taken, and the state the solver continues from
+  // (EXPRESS_FROM).
+  const PREV = new Float64Array(new ArrayBuffer(6 * 8));
   const FROM = new Float64Array(new ArrayBuffer(6 * 8));
   // The tuning constants as constants of the closure, which the compiler embeds: a module-level
   // binding is a context slot (the bundler makes a module's `const` a `var`) that the optimized
@@ -236,7 +237,7 @@ function expressKernel(): ExpressKernel {
 
   /** Whether both slips at the step's end are at least √min2. */
   function slipsAbove(s: number, c: number, min2: number): boolean {
-    const z = end;
+    const z = start;
     const ix = z[0]!;
     const iy = z[2]!;
     const cx = z[3]!;
@@ -331,6 +332,15 @@ function expressKernel(): ExpressKernel {
       const rest0 = restitution;
       const wEnd0 = wEnd;
       const done = 1 - step; // 0 or minus the steps taken
+      // The step's start, kept for a hand-over: its end is evaluated into start, where the next
+      // series starts (copied here, beside the series, rather than on the way from one step's
+      // end to the next series).
+      PREV[0] = start[0]!;
+      PREV[1] = start[1]!;
+      PREV[2] = start[2]!;
+      PREV[3] = start[3]!;
+      PREV[4] = start[4]!;
+      PREV[5] = start[5]!;
       if (!(rolling ? seriesRolling() : series())) return handOver(rest0, wEnd0, p, done);
       // The step from the series' two last terms (after Jorba and Zou 2005): the largest h with
       // |a_k L^k| (h / L)^8 within the tolerance for k = 7 and 8, each variable against its weight.
@@ -397,7 +407,7 @@ function expressKernel(): ExpressKernel {
       // of the end is never needed (the result is evaluated where it ends).
       q[56] = dp; // q[SERIES_AT]
       endFirst();
-      if (!restitution && end[1]! <= 0) {
+      if (!restitution && start[1]! <= 0) {
         ARG[0] = dp;
         ARG[1] = c;
         ARG[2] = ee2 === 0 ? rootMove : eventDone;
@@ -409,7 +419,7 @@ function expressKernel(): ExpressKernel {
         if (ee2 === 0) return finish(from, e0) ? step : handOver(rest0, wEnd0, p, done);
       }
       if (restitution) {
-        if (end[5]! <= wEnd) {
+        if (start[5]! <= wEnd) {
           ARG[0] = wEnd;
           ARG[1] = from;
           ARG[2] = dp;
@@ -418,7 +428,7 @@ function expressKernel(): ExpressKernel {
           const t = ARG[4]!;
           return finish(t, e0) ? step : handOver(rest0, wEnd0, p, done);
         }
-        if (end[1]! >= 0) return handOver(rest0, wEnd0, p, done); // vy back at zero: stalled (the solver decides)
+        if (start[1]! >= 0) return handOver(rest0, wEnd0, p, done); // vy back at zero: stalled (the solver decides)
       }
       q[56] = dp; // (the roots above move it)
       endRest();
@@ -428,14 +438,9 @@ function expressKernel(): ExpressKernel {
       // 217,836 impacts, random and structured, and cost 9% of the time.)
       if (!slipsAbove(s, c, min2)) return handOver(rest0, wEnd0, p, done);
       rolling = false;
-      start[0] = end[0]!;
-      start[1] = end[1]!;
-      start[2] = end[2]!;
-      start[3] = end[3]!;
-      start[4] = end[4]!;
-      start[5] = end[5]!;
       p += dp;
     }
+    PREV.set(start); // (the state where the last step ended: the solver continues from there)
     return handOver(restitution, wEnd, p, -maxSteps);
   }
 
@@ -444,7 +449,7 @@ function expressKernel(): ExpressKernel {
    * returns code.
    */
   function handOver(restitution: boolean, wEnd: number, p: number, code: number): number {
-    stateOf(start, FROM);
+    stateOf(PREV, FROM);
     const h = HANDOVER;
     h.restitution = restitution;
     h.wEnd = wEnd;

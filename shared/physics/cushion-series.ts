@@ -43,10 +43,8 @@ export interface CushionSeriesKernel {
   readonly q: Float64Array;
   /** The constants (constants in cushion-express.ts). */
   readonly k: Float64Array;
-  /** The state a series starts from. */
+  /** The variables a series starts from, where a step's end is evaluated (endFirst: vy and W; endRest: the other four). */
   readonly start: Float64Array;
-  /** A step's end (endFirst: vy and W; endRest: the other four). */
-  readonly end: Float64Array;
   /** The six values (valueAt). */
   readonly out: Float64Array;
   /** vy, dvy/dp and W (event). */
@@ -70,7 +68,6 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
   const q = new Float64Array(new ArrayBuffer(SERIES_LENGTH * 8));
   const k = new Float64Array(new ArrayBuffer(SERIES_CONSTANTS * 8));
   const start = new Float64Array(new ArrayBuffer(6 * 8));
-  const end = new Float64Array(new ArrayBuffer(6 * 8));
   const out = new Float64Array(new ArrayBuffer(6 * 8));
   const ev = new Float64Array(new ArrayBuffer(3 * 8));
   /**
@@ -646,28 +643,28 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     out[5] = ((((q[45]! + q[46]! * p1) + (q[47]! + q[48]! * p1) * p2) + ((q[49]! + q[50]! * p1) + (q[51]! + q[52]! * p1) * p2) * p4) + q[53]! * p8) + q[55]! * (p8 * t);
   }
 
-  /** vy and the work W of q at p = q[SERIES_AT] into end[1] and end[5] (as cushionSeriesAt). */
+  /** vy and the work W of q at p = q[SERIES_AT] into start[1] and start[5] (as cushionSeriesAt). */
   function cushionSeriesEnd(): void {
     const t = q[56]!;
     const p1 = t;
     const p2 = t * t;
     const p4 = p2 * p2;
     const p8 = p4 * p4;
-    end[1] = ((((q[9]! + q[10]! * p1) + (q[11]! + q[12]! * p1) * p2) + ((q[13]! + q[14]! * p1) + (q[15]! + q[16]! * p1) * p2) * p4) + q[17]! * p8);
-    end[5] = ((((q[45]! + q[46]! * p1) + (q[47]! + q[48]! * p1) * p2) + ((q[49]! + q[50]! * p1) + (q[51]! + q[52]! * p1) * p2) * p4) + q[53]! * p8) + q[55]! * (p8 * t);
+    start[1] = ((((q[9]! + q[10]! * p1) + (q[11]! + q[12]! * p1) * p2) + ((q[13]! + q[14]! * p1) + (q[15]! + q[16]! * p1) * p2) * p4) + q[17]! * p8);
+    start[5] = ((((q[45]! + q[46]! * p1) + (q[47]! + q[48]! * p1) * p2) + ((q[49]! + q[50]! * p1) + (q[51]! + q[52]! * p1) * p2) * p4) + q[53]! * p8) + q[55]! * (p8 * t);
   }
 
-  /** The slips' e_I,x, e_I,y, e_C,x and R ωz of q at p = q[SERIES_AT] into end[0], end[2], end[3], end[4] (as cushionSeriesAt). */
+  /** The slips' e_I,x, e_I,y, e_C,x and R ωz of q at p = q[SERIES_AT] into start[0], start[2], start[3], start[4] (as cushionSeriesAt). */
   function cushionSeriesRest(): void {
     const t = q[56]!;
     const p1 = t;
     const p2 = t * t;
     const p4 = p2 * p2;
     const p8 = p4 * p4;
-    end[0] = ((((q[0]! + q[1]! * p1) + (q[2]! + q[3]! * p1) * p2) + ((q[4]! + q[5]! * p1) + (q[6]! + q[7]! * p1) * p2) * p4) + q[8]! * p8);
-    end[2] = ((((q[18]! + q[19]! * p1) + (q[20]! + q[21]! * p1) * p2) + ((q[22]! + q[23]! * p1) + (q[24]! + q[25]! * p1) * p2) * p4) + q[26]! * p8);
-    end[3] = ((((q[27]! + q[28]! * p1) + (q[29]! + q[30]! * p1) * p2) + ((q[31]! + q[32]! * p1) + (q[33]! + q[34]! * p1) * p2) * p4) + q[35]! * p8);
-    end[4] = ((((q[36]! + q[37]! * p1) + (q[38]! + q[39]! * p1) * p2) + ((q[40]! + q[41]! * p1) + (q[42]! + q[43]! * p1) * p2) * p4) + q[44]! * p8);
+    start[0] = ((((q[0]! + q[1]! * p1) + (q[2]! + q[3]! * p1) * p2) + ((q[4]! + q[5]! * p1) + (q[6]! + q[7]! * p1) * p2) * p4) + q[8]! * p8);
+    start[2] = ((((q[18]! + q[19]! * p1) + (q[20]! + q[21]! * p1) * p2) + ((q[22]! + q[23]! * p1) + (q[24]! + q[25]! * p1) * p2) * p4) + q[26]! * p8);
+    start[3] = ((((q[27]! + q[28]! * p1) + (q[29]! + q[30]! * p1) * p2) + ((q[31]! + q[32]! * p1) + (q[33]! + q[34]! * p1) * p2) * p4) + q[35]! * p8);
+    start[4] = ((((q[36]! + q[37]! * p1) + (q[38]! + q[39]! * p1) * p2) + ((q[40]! + q[41]! * p1) + (q[42]! + q[43]! * p1) * p2) * p4) + q[44]! * p8);
   }
 
   /** vy, dvy/dp and the work W (to p^9) of q at p = q[SERIES_AT] into ev[0], ev[1], ev[2] (Estrin's scheme). */
@@ -682,7 +679,7 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     ev[2] = ((((q[45]! + q[46]! * p1) + (q[47]! + q[48]! * p1) * p2) + ((q[49]! + q[50]! * p1) + (q[51]! + q[52]! * p1) * p2) * p4) + q[53]! * p8) + q[55]! * (p8 * t);
   }
   return {
-    q, k, start, end, out, ev, series: cushionSeries, seriesRolling: cushionSeriesRolling, valueAt: cushionSeriesAt,
+    q, k, start, out, ev, series: cushionSeries, seriesRolling: cushionSeriesRolling, valueAt: cushionSeriesAt,
     endFirst: cushionSeriesEnd, endRest: cushionSeriesRest, event: cushionSeriesEvent,
   };
 }

@@ -135,7 +135,7 @@ describe('cushion series', () => {
 
   it('is evaluated at a step\'s end in two parts (vy and the work, then the rest) with the bits of the whole', () => {
     const whole = new Float64Array(6);
-    const parts = S.end;
+    const parts = S.start;
     fc.assert(
       fc.property(issueImpact, fc.double({ min: 0, max: 3, noNaN: true }), (g, x) => {
         const { k } = constants(g.params);
