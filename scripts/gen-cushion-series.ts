@@ -71,8 +71,13 @@ w(' * not as an argument, as a number passed to a function that is not inlined i
 w(' * allocation; these are called on every step).');
 w(' */');
 w(`export const SERIES_AT = ${6 * (N + 1) + 2};`);
+w('/**');
+w(' * Where the series functions leave the step\'s choice its first inputs (cushion-express.ts): the');
+w(' * largest weighted coefficients of p^6 and p^7 in L^k (n6, n7), then n7\'s eighth root.');
+w(' */');
+w(`export const SERIES_NORMS = ${6 * (N + 1) + 3};`);
 w('/** The length of a series array. */');
-w(`export const SERIES_LENGTH = ${6 * (N + 1) + 3};`);
+w(`export const SERIES_LENGTH = ${6 * (N + 1) + 6};`);
 w('');
 /**
  * Emits one series function. rolling: the table slip is zero at the start and grows (a ball
@@ -109,6 +114,11 @@ function emit(rolling: boolean): void {
   w('  const wCy = k[10]!;');
   w('  const sc = k[11]!;');
   w('  const lim = k[12]!;');
+  w('  const iv = k[13]!;');
+  w('  const iw = k[14]!;');
+  w('  const w6 = k[15]!;');
+  w('  const w7 = k[16]!;');
+  w('  const i1 = k[17]!;');
   // The variables (SERIES_VARIABLES): the cushion slip, vy, the table slip's x, R ωz and the work;
   // the table slip's y is e_I,y + (1 + sinθ) vy (cushion-model.ts, paper eqs. 12, 13).
   w('  const eIx0 = start[0]!;');
@@ -172,13 +182,37 @@ function emit(rolling: boolean): void {
     w(`  q[${o(2)}] = eIy${k + 1};`);
     // (A table slip growing from zero, e_C = p w: its coefficient of p^(k+1) is w_k.)
     w(`  q[${o(3)}] = ${rolling ? `wCx${k}` : `eCx${k + 1}`};`);
-    w(`  q[${o(4)}] = -2.5 * c * gx${k}${inv};`);
-    w(`  q[${o(5)}] = c * y1_${k}${inv};`);
+    w(`  const oz${k + 1} = -2.5 * c * gx${k}${inv};`);
+    w(`  q[${o(4)}] = oz${k + 1};`);
+    w(`  const W${k + 1} = c * y1_${k}${inv};`);
+    w(`  q[${o(5)}] = W${k + 1};`);
+    if (k + 1 === N - 1) stepNorms(rolling);
   }
   w(`  q[${6 * (N + 1) + 1}] = c * y1_${N} * ${1 / (N + 1)};`);
   ['eIx0', 'y1_0', 'eIy0', 'eCx0', 'y4_0', 'y5_0'].forEach((v, i) => w(`  q[${i * (N + 1)}] = ${v};`));
   w('  return true;');
   w('}');
+}
+
+/**
+ * The step's choice's first inputs (cushion-express.ts), formed as soon as the series has orders 6
+ * and 7, so that n7's eighth root runs beside order 8 instead of after the series: for each
+ * order, the largest of the state's coefficients (vx, vy, R ωx, R ωy, R ωz, from the variables as
+ * in stateOf) against iv and of the work's against iw, in units of L (w6 = L^6, w7 = L^7). The
+ * same operations as the express path's stateNorm, in the same order.
+ */
+function stepNorms(rolling: boolean): void {
+  w('  // The step\'s choice\'s first inputs (SERIES_NORMS).');
+  for (const k of [N - 2, N - 1]) {
+    const eCx = rolling ? `wCx${k - 1}` : `eCx${k}`;
+    w(`  const u${k} = eIx${k} + c * oz${k};`);
+    w(`  const a${k} = Math.max(Math.abs(y1_${k}), Math.abs(oz${k}), Math.abs(eIy${k} + s * y1_${k}), ` +
+      `Math.abs((u${k} + s * ${eCx}) * i1), Math.abs((u${k} - ${eCx}) * i1)) * iv;`);
+    w(`  const nW${k} = Math.abs(W${k}) * iw;`);
+    w(`  const n${k} = (a${k} > nW${k} ? a${k} : nW${k}) * w${k};`);
+    w(`  q[${6 * (N + 1) + 3 + k - (N - 2)}] = n${k};`);
+  }
+  w(`  q[${6 * (N + 1) + 5}] = Math.sqrt(Math.sqrt(Math.sqrt(n${N - 1})));`);
 }
 
 /** A slip's speed and unit direction at order k (the series of e / |e|). */
@@ -279,7 +313,7 @@ function rollingDirection(k: number): void {
 }
 
 w('/** The series constants\' count (constants in cushion-express.ts). */');
-w('export const SERIES_CONSTANTS = 13;');
+w('export const SERIES_CONSTANTS = 18;');
 w('');
 w('/** The series kernel: its arrays and the functions that fill and evaluate them. */');
 w('export interface CushionSeriesKernel {');

@@ -80,7 +80,7 @@ export const EVENT_DONE = 1e-3;
  * those of the series' (SERIES_VARIABLES; see stateOf): the step is chosen on the state's
  * coefficients, as the tolerance is stated in them.
  */
-function stateNorm(eIx: number, vy: number, eIy: number, eCx: number, oz: number, s: number, c: number): number {
+export function stateNorm(eIx: number, vy: number, eIy: number, eCx: number, oz: number, s: number, c: number): number {
   const u = eIx + c * oz;
   const i1 = 1 / (1 + s);
   // (vx and R ωy, the longest to form, last: the maximum waits on them only at its end.)
@@ -126,8 +126,9 @@ function expressKernel(): ExpressKernel {
   // The roots' arguments, in, and the root, out at 4 (a number passed to or returned by a function
   // that is not inlined is boxed: a heap allocation each).
   const ARG = new Float64Array(new ArrayBuffer(5 * 8));
-  // The impact's sinθ, cosθ, μs, μw and the slips' threshold (for constants and stateOf).
-  const GEOM = new Float64Array(new ArrayBuffer(5 * 8));
+  // The impact's sinθ, cosθ, μs, μw, the slips' threshold and the step's choice's weights iv,
+  // iw, L^6 and L^7 (for constants and stateOf).
+  const GEOM = new Float64Array(new ArrayBuffer(9 * 8));
   // The variables at the start of the step being taken, and the state the solver continues from
   // (EXPRESS_FROM).
   const PREV = new Float64Array(new ArrayBuffer(6 * 8));
@@ -288,12 +289,6 @@ function expressKernel(): ExpressKernel {
       if (cx * cx + cy * cy <= zero * zero) rolling = true;
       else if (!(cx * cx + cy * cy >= min2)) return 0;
     }
-    GEOM[0] = s;
-    GEOM[1] = c;
-    GEOM[2] = muS;
-    GEOM[3] = muW;
-    GEOM[4] = lim;
-    constants();
     // The series' variables (SERIES_VARIABLES): e_I, vy, e_C,x, R ωz and the work.
     start[0] = vx + s * oy - c * oz;
     start[1] = vy;
@@ -320,6 +315,16 @@ function expressKernel(): ExpressKernel {
     const w6 = L4 * L2;
     const w7 = w6 * L;
     const w8 = L4 * L4;
+    GEOM[0] = s;
+    GEOM[1] = c;
+    GEOM[2] = muS;
+    GEOM[3] = muW;
+    GEOM[4] = lim;
+    GEOM[5] = iv;
+    GEOM[6] = iw;
+    GEOM[7] = w6;
+    GEOM[8] = w7;
+    constants();
     const hMax = 3 * L;
     const ee2 = ee * ee;
     // Twice the kinetic and rotational energy per unit mass (I = 2/5 M R²).
@@ -346,20 +351,18 @@ function expressKernel(): ExpressKernel {
       // |a_k L^k| (h / L)^8 within the tolerance for k = 7 and 8, each variable against its weight.
       // The largest weighted coefficients of p^6, p^7 and p^8 (q[9 i + k], SERIES_TERMS = 9: the
       // indices are written out, a loop with computed indices cost 4% of an impact).
-      let n6 = Math.abs(q[51]!) * iw;
-      let n7 = Math.abs(q[52]!) * iw;
+      // n6, n7 and n7's eighth root come from the series (SERIES_NORMS), formed there beside
+      // order 8; n8 here, the same way (stateNorm: the state's coefficients against iv, the
+      // work's against iw, in units of L^8).
+      const n6 = q[57]!;
+      const n7 = q[58]!;
       let n8 = Math.abs(q[53]!) * iw;
-      const a6 = stateNorm(q[6]!, q[15]!, q[24]!, q[33]!, q[42]!, s, c) * iv;
-      const a7 = stateNorm(q[7]!, q[16]!, q[25]!, q[34]!, q[43]!, s, c) * iv;
       const a8 = stateNorm(q[8]!, q[17]!, q[26]!, q[35]!, q[44]!, s, c) * iv;
-      if (a6 > n6) n6 = a6;
-      if (a7 > n7) n7 = a7;
       if (a8 > n8) n8 = a8;
-      n6 *= w6;
-      n7 *= w7;
       n8 *= w8;
       const n = n7 > n8 ? n7 : n8;
-      const t = Math.sqrt(Math.sqrt(Math.sqrt(n))); // L / (the last terms' step)
+      // L / (the last terms' step)
+      const t = n7 >= n8 ? q[59]! : Math.sqrt(Math.sqrt(Math.sqrt(n8)));
       let dp = n > 0 ? L / t : hMax;
       // The ratio test: with the terms falling by r = n8 / n7 an order (in units of L; n8 floored,
       // below; each n_k is the largest over the variables, so r may mix two of them), the
@@ -383,7 +386,8 @@ function expressKernel(): ExpressKernel {
         const r = m8 / n7;
         if (r < ratioMax * t) {
           const g = t - r;
-          let x = Math.sqrt(Math.sqrt(Math.sqrt(n7 / (m8 * m8)))) * ((7 + 9 * g) / (9 + 7 * g));
+          // ((n7 / m8²)^(1/8) as n7^(1/8) / m8^(1/4): two roots after the series, not three.)
+          let x = (q[59]! / Math.sqrt(Math.sqrt(m8))) * ((7 + 9 * g) / (9 + 7 * g));
           if (x * r > ratioMax) x = ratioMax / r;
           const xt = x * t; // x / x0
           if (xt > ratioGain) dp = (ratioGain * L) / t;
@@ -505,6 +509,13 @@ function expressKernel(): ExpressKernel {
     K[10] = -(2.5 - s) * muW;
     K[11] = s * c;
     K[12] = GEOM[4]!;
+    // The step's choice's weights (SERIES_NORMS): the speeds', the work's, L^6, L^7, and
+    // 1 / (1 + sinθ) (stateNorm).
+    K[13] = GEOM[5]!;
+    K[14] = GEOM[6]!;
+    K[15] = GEOM[7]!;
+    K[16] = GEOM[8]!;
+    K[17] = 1 / (1 + s);
   }
 
   /**
@@ -551,6 +562,7 @@ function expressKernel(): ExpressKernel {
       GEOM[2] = muS;
       GEOM[3] = muW;
       GEOM[4] = lim;
+      GEOM.fill(0, 5);
       constants();
     },
     compressionEnd: (dp: number, c: number, done: number): number => {

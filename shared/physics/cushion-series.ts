@@ -31,11 +31,16 @@ export const SERIES_W_LAST = 55;
  * allocation; these are called on every step).
  */
 export const SERIES_AT = 56;
+/**
+ * Where the series functions leave the step's choice its first inputs (cushion-express.ts): the
+ * largest weighted coefficients of p^6 and p^7 in L^k (n6, n7), then n7's eighth root.
+ */
+export const SERIES_NORMS = 57;
 /** The length of a series array. */
-export const SERIES_LENGTH = 57;
+export const SERIES_LENGTH = 60;
 
 /** The series constants' count (constants in cushion-express.ts). */
-export const SERIES_CONSTANTS = 13;
+export const SERIES_CONSTANTS = 18;
 
 /** The series kernel: its arrays and the functions that fill and evaluate them. */
 export interface CushionSeriesKernel {
@@ -90,6 +95,11 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     const wCy = k[10]!;
     const sc = k[11]!;
     const lim = k[12]!;
+    const iv = k[13]!;
+    const iw = k[14]!;
+    const w6 = k[15]!;
+    const w7 = k[16]!;
+    const i1 = k[17]!;
     const eIx0 = start[0]!;
     const y1_0 = start[1]!;
     const eIy0 = start[2]!;
@@ -123,8 +133,10 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[10] = y1_1;
     q[19] = eIy1;
     q[28] = eCx1;
-    q[37] = -2.5 * c * gx0;
-    q[46] = c * y1_0;
+    const oz1 = -2.5 * c * gx0;
+    q[37] = oz1;
+    const W1 = c * y1_0;
+    q[46] = W1;
     // Order 1.
     const rI1 = (eIx0 * eIx1 + eIy0 * eIy1) * iI;
     const uIx1 = (eIx1 - rI1 * uIx0) * iI;
@@ -152,8 +164,10 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[11] = y1_2;
     q[20] = eIy2;
     q[29] = eCx2;
-    q[38] = -2.5 * c * gx1 * 0.5;
-    q[47] = c * y1_1 * 0.5;
+    const oz2 = -2.5 * c * gx1 * 0.5;
+    q[38] = oz2;
+    const W2 = c * y1_1 * 0.5;
+    q[47] = W2;
     // Order 2.
     const oI2 = 0.5 * (eIx1 * eIx1 + eIy1 * eIy1 - rI1 * rI1);
     const rI2 = (oI2 + eIx0 * eIx2 + eIy0 * eIy2) * iI;
@@ -177,8 +191,10 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[12] = y1_3;
     q[21] = eIy3;
     q[30] = eCx3;
-    q[39] = -2.5 * c * gx2 * 0.3333333333333333;
-    q[48] = c * y1_2 * 0.3333333333333333;
+    const oz3 = -2.5 * c * gx2 * 0.3333333333333333;
+    q[39] = oz3;
+    const W3 = c * y1_2 * 0.3333333333333333;
+    q[48] = W3;
     // Order 3.
     const oI3 = eIx1 * eIx2 + eIy1 * eIy2 - rI1 * rI2;
     const rI3 = (oI3 + eIx0 * eIx3 + eIy0 * eIy3) * iI;
@@ -202,8 +218,10 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[13] = y1_4;
     q[22] = eIy4;
     q[31] = eCx4;
-    q[40] = -2.5 * c * gx3 * 0.25;
-    q[49] = c * y1_3 * 0.25;
+    const oz4 = -2.5 * c * gx3 * 0.25;
+    q[40] = oz4;
+    const W4 = c * y1_3 * 0.25;
+    q[49] = W4;
     // Order 4.
     const oI4 = (eIx1 * eIx3 + eIy1 * eIy3 - rI1 * rI3 + 0.5 * (eIx2 * eIx2 + eIy2 * eIy2 - rI2 * rI2));
     const rI4 = (oI4 + eIx0 * eIx4 + eIy0 * eIy4) * iI;
@@ -227,8 +245,10 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[14] = y1_5;
     q[23] = eIy5;
     q[32] = eCx5;
-    q[41] = -2.5 * c * gx4 * 0.2;
-    q[50] = c * y1_4 * 0.2;
+    const oz5 = -2.5 * c * gx4 * 0.2;
+    q[41] = oz5;
+    const W5 = c * y1_4 * 0.2;
+    q[50] = W5;
     // Order 5.
     const oI5 = (eIx1 * eIx4 + eIy1 * eIy4 - rI1 * rI4 + eIx2 * eIx3 + eIy2 * eIy3 - rI2 * rI3);
     const rI5 = (oI5 + eIx0 * eIx5 + eIy0 * eIy5) * iI;
@@ -252,8 +272,10 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[15] = y1_6;
     q[24] = eIy6;
     q[33] = eCx6;
-    q[42] = -2.5 * c * gx5 * 0.16666666666666666;
-    q[51] = c * y1_5 * 0.16666666666666666;
+    const oz6 = -2.5 * c * gx5 * 0.16666666666666666;
+    q[42] = oz6;
+    const W6 = c * y1_5 * 0.16666666666666666;
+    q[51] = W6;
     // Order 6.
     const oI6 = ((eIx1 * eIx5 + eIy1 * eIy5 - rI1 * rI5 + eIx2 * eIx4 + eIy2 * eIy4 - rI2 * rI4) + 0.5 * (eIx3 * eIx3 + eIy3 * eIy3 - rI3 * rI3));
     const rI6 = (oI6 + eIx0 * eIx6 + eIy0 * eIy6) * iI;
@@ -277,8 +299,22 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[16] = y1_7;
     q[25] = eIy7;
     q[34] = eCx7;
-    q[43] = -2.5 * c * gx6 * 0.14285714285714285;
-    q[52] = c * y1_6 * 0.14285714285714285;
+    const oz7 = -2.5 * c * gx6 * 0.14285714285714285;
+    q[43] = oz7;
+    const W7 = c * y1_6 * 0.14285714285714285;
+    q[52] = W7;
+    // The step's choice's first inputs (SERIES_NORMS).
+    const u6 = eIx6 + c * oz6;
+    const a6 = Math.max(Math.abs(y1_6), Math.abs(oz6), Math.abs(eIy6 + s * y1_6), Math.abs((u6 + s * eCx6) * i1), Math.abs((u6 - eCx6) * i1)) * iv;
+    const nW6 = Math.abs(W6) * iw;
+    const n6 = (a6 > nW6 ? a6 : nW6) * w6;
+    q[57] = n6;
+    const u7 = eIx7 + c * oz7;
+    const a7 = Math.max(Math.abs(y1_7), Math.abs(oz7), Math.abs(eIy7 + s * y1_7), Math.abs((u7 + s * eCx7) * i1), Math.abs((u7 - eCx7) * i1)) * iv;
+    const nW7 = Math.abs(W7) * iw;
+    const n7 = (a7 > nW7 ? a7 : nW7) * w7;
+    q[58] = n7;
+    q[59] = Math.sqrt(Math.sqrt(Math.sqrt(n7)));
     // Order 7.
     const oI7 = ((eIx1 * eIx6 + eIy1 * eIy6 - rI1 * rI6 + eIx2 * eIx5 + eIy2 * eIy5 - rI2 * rI5) + eIx3 * eIx4 + eIy3 * eIy4 - rI3 * rI4);
     const rI7 = (oI7 + eIx0 * eIx7 + eIy0 * eIy7) * iI;
@@ -301,8 +337,10 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[17] = y1_8;
     q[26] = eIy8;
     q[35] = eCx8;
-    q[44] = -2.5 * c * gx7 * 0.125;
-    q[53] = c * y1_7 * 0.125;
+    const oz8 = -2.5 * c * gx7 * 0.125;
+    q[44] = oz8;
+    const W8 = c * y1_7 * 0.125;
+    q[53] = W8;
     q[55] = c * y1_8 * 0.1111111111111111;
     q[0] = eIx0;
     q[9] = y1_0;
@@ -333,6 +371,11 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     const wCy = k[10]!;
     const sc = k[11]!;
     const lim = k[12]!;
+    const iv = k[13]!;
+    const iw = k[14]!;
+    const w6 = k[15]!;
+    const w7 = k[16]!;
+    const i1 = k[17]!;
     const eIx0 = start[0]!;
     const y1_0 = start[1]!;
     const eIy0 = start[2]!;
@@ -370,8 +413,10 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[10] = y1_1;
     q[19] = eIy1;
     q[28] = wCx0;
-    q[37] = -2.5 * c * gx0;
-    q[46] = c * y1_0;
+    const oz1 = -2.5 * c * gx0;
+    q[37] = oz1;
+    const W1 = c * y1_0;
+    q[46] = W1;
     // Order 1.
     const rI1 = (eIx0 * eIx1 + eIy0 * eIy1) * iI;
     const uIx1 = (eIx1 - rI1 * uIx0) * iI;
@@ -406,8 +451,10 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[11] = y1_2;
     q[20] = eIy2;
     q[29] = wCx1;
-    q[38] = -2.5 * c * gx1 * 0.5;
-    q[47] = c * y1_1 * 0.5;
+    const oz2 = -2.5 * c * gx1 * 0.5;
+    q[38] = oz2;
+    const W2 = c * y1_1 * 0.5;
+    q[47] = W2;
     // Order 2.
     const oI2 = 0.5 * (eIx1 * eIx1 + eIy1 * eIy1 - rI1 * rI1);
     const rI2 = (oI2 + eIx0 * eIx2 + eIy0 * eIy2) * iI;
@@ -441,8 +488,10 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[12] = y1_3;
     q[21] = eIy3;
     q[30] = wCx2;
-    q[39] = -2.5 * c * gx2 * 0.3333333333333333;
-    q[48] = c * y1_2 * 0.3333333333333333;
+    const oz3 = -2.5 * c * gx2 * 0.3333333333333333;
+    q[39] = oz3;
+    const W3 = c * y1_2 * 0.3333333333333333;
+    q[48] = W3;
     // Order 3.
     const oI3 = eIx1 * eIx2 + eIy1 * eIy2 - rI1 * rI2;
     const rI3 = (oI3 + eIx0 * eIx3 + eIy0 * eIy3) * iI;
@@ -476,8 +525,10 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[13] = y1_4;
     q[22] = eIy4;
     q[31] = wCx3;
-    q[40] = -2.5 * c * gx3 * 0.25;
-    q[49] = c * y1_3 * 0.25;
+    const oz4 = -2.5 * c * gx3 * 0.25;
+    q[40] = oz4;
+    const W4 = c * y1_3 * 0.25;
+    q[49] = W4;
     // Order 4.
     const oI4 = (eIx1 * eIx3 + eIy1 * eIy3 - rI1 * rI3 + 0.5 * (eIx2 * eIx2 + eIy2 * eIy2 - rI2 * rI2));
     const rI4 = (oI4 + eIx0 * eIx4 + eIy0 * eIy4) * iI;
@@ -511,8 +562,10 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[14] = y1_5;
     q[23] = eIy5;
     q[32] = wCx4;
-    q[41] = -2.5 * c * gx4 * 0.2;
-    q[50] = c * y1_4 * 0.2;
+    const oz5 = -2.5 * c * gx4 * 0.2;
+    q[41] = oz5;
+    const W5 = c * y1_4 * 0.2;
+    q[50] = W5;
     // Order 5.
     const oI5 = (eIx1 * eIx4 + eIy1 * eIy4 - rI1 * rI4 + eIx2 * eIx3 + eIy2 * eIy3 - rI2 * rI3);
     const rI5 = (oI5 + eIx0 * eIx5 + eIy0 * eIy5) * iI;
@@ -546,8 +599,10 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[15] = y1_6;
     q[24] = eIy6;
     q[33] = wCx5;
-    q[42] = -2.5 * c * gx5 * 0.16666666666666666;
-    q[51] = c * y1_5 * 0.16666666666666666;
+    const oz6 = -2.5 * c * gx5 * 0.16666666666666666;
+    q[42] = oz6;
+    const W6 = c * y1_5 * 0.16666666666666666;
+    q[51] = W6;
     // Order 6.
     const oI6 = ((eIx1 * eIx5 + eIy1 * eIy5 - rI1 * rI5 + eIx2 * eIx4 + eIy2 * eIy4 - rI2 * rI4) + 0.5 * (eIx3 * eIx3 + eIy3 * eIy3 - rI3 * rI3));
     const rI6 = (oI6 + eIx0 * eIx6 + eIy0 * eIy6) * iI;
@@ -581,8 +636,22 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[16] = y1_7;
     q[25] = eIy7;
     q[34] = wCx6;
-    q[43] = -2.5 * c * gx6 * 0.14285714285714285;
-    q[52] = c * y1_6 * 0.14285714285714285;
+    const oz7 = -2.5 * c * gx6 * 0.14285714285714285;
+    q[43] = oz7;
+    const W7 = c * y1_6 * 0.14285714285714285;
+    q[52] = W7;
+    // The step's choice's first inputs (SERIES_NORMS).
+    const u6 = eIx6 + c * oz6;
+    const a6 = Math.max(Math.abs(y1_6), Math.abs(oz6), Math.abs(eIy6 + s * y1_6), Math.abs((u6 + s * wCx5) * i1), Math.abs((u6 - wCx5) * i1)) * iv;
+    const nW6 = Math.abs(W6) * iw;
+    const n6 = (a6 > nW6 ? a6 : nW6) * w6;
+    q[57] = n6;
+    const u7 = eIx7 + c * oz7;
+    const a7 = Math.max(Math.abs(y1_7), Math.abs(oz7), Math.abs(eIy7 + s * y1_7), Math.abs((u7 + s * wCx6) * i1), Math.abs((u7 - wCx6) * i1)) * iv;
+    const nW7 = Math.abs(W7) * iw;
+    const n7 = (a7 > nW7 ? a7 : nW7) * w7;
+    q[58] = n7;
+    q[59] = Math.sqrt(Math.sqrt(Math.sqrt(n7)));
     // Order 7.
     const oI7 = ((eIx1 * eIx6 + eIy1 * eIy6 - rI1 * rI6 + eIx2 * eIx5 + eIy2 * eIy5 - rI2 * rI5) + eIx3 * eIx4 + eIy3 * eIy4 - rI3 * rI4);
     const rI7 = (oI7 + eIx0 * eIx7 + eIy0 * eIy7) * iI;
@@ -616,8 +685,10 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[17] = y1_8;
     q[26] = eIy8;
     q[35] = wCx7;
-    q[44] = -2.5 * c * gx7 * 0.125;
-    q[53] = c * y1_7 * 0.125;
+    const oz8 = -2.5 * c * gx7 * 0.125;
+    q[44] = oz8;
+    const W8 = c * y1_7 * 0.125;
+    q[53] = W8;
     q[55] = c * y1_8 * 0.1111111111111111;
     q[0] = eIx0;
     q[9] = y1_0;

@@ -10,10 +10,10 @@ import { describe, expect, it } from 'vitest';
 import { cushionImpactSolver } from '../../shared/physics/cushion.ts';
 import {
   compressionEnd, EVENT_DONE, EXPRESS_EVENT, EXPRESS_HANDOVER, EXPRESS_IN, EXPRESS_OUT, EXPRESS_SERIES, EXPRESS_SLIP_MIN,
-  expressImpact, restitutionEnd, seriesConstants,
+  expressImpact, restitutionEnd, seriesConstants, stateNorm,
 } from '../../shared/physics/cushion-express.ts';
 import { CushionModel } from '../../shared/physics/cushion-model.ts';
-import { SERIES_AT, SERIES_CUT, SERIES_LENGTH, SERIES_TERMS } from '../../shared/physics/cushion-series.ts';
+import { SERIES_AT, SERIES_CUT, SERIES_LENGTH, SERIES_NORMS, SERIES_TERMS } from '../../shared/physics/cushion-series.ts';
 import { cushionImpact } from '../../shared/physics/index.ts';
 import type { CushionParams, CushionState } from '../../shared/physics/index.ts';
 import { CUSHION_SERIES_FILE, CUSHION_SERIES_SOURCE } from '../../scripts/gen-cushion-series.ts';
@@ -83,11 +83,37 @@ describe('cushion series', () => {
     expect(readFileSync(CUSHION_SERIES_FILE, 'utf8')).toBe(CUSHION_SERIES_SOURCE);
   });
 
-  it('has the layout the express path reads by literal indices (q[9 i + k], the cut at 54, the point at 56)', () => {
+  it('has the layout the express path reads by literal indices (q[9 i + k], the cut at 54, the point at 56, the norms at 57)', () => {
     expect(SERIES_TERMS).toBe(9);
     expect(SERIES_CUT).toBe(54);
     expect(SERIES_AT).toBe(56);
-    expect(SERIES_LENGTH).toBe(57);
+    expect(SERIES_NORMS).toBe(57);
+    expect(SERIES_LENGTH).toBe(60);
+  });
+
+  it('leaves the step\'s choice n6, n7 (the weighted largest state coefficients of p^6 and p^7) and n7\'s eighth root, as the express path forms n8', () => {
+    fc.assert(
+      fc.property(
+        issueImpact, fc.double({ min: 1e-3, max: 1e3, noNaN: true }), fc.double({ min: 1e-3, max: 1e3, noNaN: true }),
+        (g, iv, iw) => {
+          const { s, c, k } = constants(g.params);
+          const L = g.state.vy / c;
+          k[13] = iv;
+          k[14] = iw;
+          k[15] = L ** 6;
+          k[16] = L ** 7;
+          k[17] = 1 / (1 + s);
+          if (!seriesAbout(internal(g.state, g.params.R))) return;
+          for (const [order, slot] of [[6, 57], [7, 58]] as const) {
+            const a = stateNorm(q[order]!, q[NT + order]!, q[2 * NT + order]!, q[3 * NT + order]!, q[4 * NT + order]!, s, c) * iv;
+            const nW = Math.abs(q[5 * NT + order]!) * iw;
+            expect(q[slot]).toBe((a > nW ? a : nW) * k[order === 6 ? 15 : 16]!);
+          }
+          expect(q[59]).toBe(Math.sqrt(Math.sqrt(Math.sqrt(q[58]!))));
+        },
+      ),
+      { numRuns: 300, seed: 11 },
+    );
   });
 
   it('is the Taylor series of the equations: a fine Runge-Kutta integration of the model lands on it', () => {
