@@ -136,6 +136,8 @@ function expressKernel(): ExpressKernel {
   // The variables at the start of the step being taken, and the state the solver continues from
   // (EXPRESS_FROM).
   const PREV = new Float64Array(new ArrayBuffer(6 * 8));
+  // The last impact's R and h, with their sinθ and cosθ (NaN at first: no match).
+  const LAST = new Float64Array(new ArrayBuffer(4 * 8)).fill(NaN);
   const FROM = new Float64Array(new ArrayBuffer(6 * 8));
   // The tuning constants as constants of the closure, which the compiler embeds: a module-level
   // binding is a context slot (the bundler makes a module's `const` a `var`) that the optimized
@@ -269,8 +271,21 @@ function expressKernel(): ExpressKernel {
     const muS = input[8]!;
     const muW = input[9]!;
     const tol = input[10]!;
-    const s = (h - R) / R;
-    const c = Math.sqrt((1 - s) * (1 + s));
+    // sinθ and cosθ, kept from the last impact when R and h are the same (a division and a
+    // square root on the way to the first series; the same bits either way).
+    let s: number;
+    let c: number;
+    if (R === LAST[0] && h === LAST[1]) {
+      s = LAST[2]!;
+      c = LAST[3]!;
+    } else {
+      s = (h - R) / R;
+      c = Math.sqrt((1 - s) * (1 + s));
+      LAST[0] = R;
+      LAST[1] = h;
+      LAST[2] = s;
+      LAST[3] = c;
+    }
     // The table's normal impulse stays positive (sinθ + μw cosθ u_I,y > 0 for every direction), and
     // the impulse always pushes the ball out (dvy/dp < 0 for every pair of slip directions).
     if (!(s > c * muW) || !(s * muW + muS * (s + c * muW) < c)) return 0;
