@@ -136,15 +136,18 @@ function emit(rolling: boolean): void {
     if (k === 1) {
       // The impulse after which a shrinking slip reaches lim at its present rate (r_1 is the
       // rate of its speed), for the step control (cushion-express.ts); computed here, beside
-      // the later orders, rather than after them.
-      w(`  ${rolling ? 'const' : 'let'} cut = rI1 < 0 ? (rI0 - lim) / -rI1 : Infinity;`);
+      // the later orders, rather than after them. (Written to q in each branch: a variable
+      // joining a quotient and the constant Infinity is kept as a tagged value, a heap number
+      // allocated on every call.)
+      const at = 6 * (N + 1);
+      w(`  q[${at}] = Infinity;`);
+      w(`  if (rI1 < 0) q[${at}] = (rI0 - lim) / -rI1;`);
       if (!rolling) {
         w('  if (rC1 < 0) {');
         w('    const cutC = (rC0 - lim) / -rC1;');
-        w('    if (cutC < cut) cut = cutC;');
+        w(`    if (cutC < q[${at}]!) q[${at}] = cutC;`);
         w('  }');
       }
-      w(`  q[${6 * (N + 1)}] = cut;`);
     }
     // -μs A = kMu u_I,y - μs sinθ, and h = -μs A u_C (a product of series).
     if (k === 0) {

@@ -130,12 +130,14 @@ function expressKernel(): ExpressKernel {
   // The roots' arguments, in, and the root, out at 4 (a number passed to or returned by a function
   // that is not inlined is boxed: a heap allocation each).
   const ARG = new Float64Array(new ArrayBuffer(5 * 8));
-  // The impact's sinθ, cosθ, μs, μw, the slips' threshold and the step's choice's weights iv,
-  // iw, L^6 and L^7 (for constants and stateOf).
-  const GEOM = new Float64Array(new ArrayBuffer(9 * 8));
+  // The impact's sinθ, cosθ, μs, μw, the slips' threshold, the step's choice's weights iv,
+  // iw, L^6 and L^7 (for constants and stateOf), and twice its energy per unit mass (finish).
+  const GEOM = new Float64Array(new ArrayBuffer(10 * 8));
   // The variables at the start of the step being taken, and the state the solver continues from
   // (EXPRESS_FROM).
   const PREV = new Float64Array(new ArrayBuffer(6 * 8));
+  // The work's target and the impulse at the start of the step being taken (for handOver).
+  const STEP = new Float64Array(new ArrayBuffer(2 * 8));
   // The last impact's R and h, with their sinθ and cosθ (NaN at first: no match).
   const LAST = new Float64Array(new ArrayBuffer(4 * 8)).fill(NaN);
   const FROM = new Float64Array(new ArrayBuffer(6 * 8));
@@ -346,15 +348,18 @@ function expressKernel(): ExpressKernel {
     constants();
     const hMax = 3 * L;
     const ee2 = ee * ee;
-    // Twice the kinetic and rotational energy per unit mass (I = 2/5 M R²).
-    const e0 = vx * vx + vy * vy + 0.4 * (ox * ox + oy * oy + oz * oz);
+    // Twice the kinetic and rotational energy per unit mass (I = 2/5 M R²), for finish.
+    GEOM[9] = vx * vx + vy * vy + 0.4 * (ox * ox + oy * oy + oz * oz);
     let restitution = false;
     let wEnd = 0;
     let p = 0;
     for (let step = 1; step <= maxSteps; step++) {
       // If this step leaves the branch, the solver continues from its start (handOver).
+      // (The work's target and the impulse at the step's start through an array: numbers passed
+      // to handOver, which is not inlined, would be boxed, and the loop's variables with them.)
       const rest0 = restitution;
-      const wEnd0 = wEnd;
+      STEP[0] = wEnd;
+      STEP[1] = p;
       const done = 1 - step; // 0 or minus the steps taken
       // The step's start, kept for a hand-over: its end is evaluated into start, where the next
       // series starts (copied here, beside the series, rather than on the way from one step's
@@ -365,7 +370,7 @@ function expressKernel(): ExpressKernel {
       PREV[3] = start[3]!;
       PREV[4] = start[4]!;
       PREV[5] = start[5]!;
-      if (!(rolling ? seriesRolling() : series())) return handOver(rest0, wEnd0, p, done);
+      if (!(rolling ? seriesRolling() : series())) return handOver(rest0, done);
       // The step from the series' two last terms (after Jorba and Zou 2005): the largest h with
       // |a_k L^k| (h / L)^8 within the tolerance for k = 7 and 8, each variable against its weight.
       // The largest weighted coefficients of p^6, p^7 and p^8 (q[9 i + k], SERIES_TERMS = 9: the
@@ -422,7 +427,7 @@ function expressKernel(): ExpressKernel {
       // continues from here.
       const cut = q[54]!; // q[SERIES_CUT]
       if (cut < dp) {
-        if (cut < 0.25 * dp) return handOver(rest0, wEnd0, p, done);
+        if (cut < 0.25 * dp) return handOver(rest0, done);
         dp = cut;
       }
       let from = 0;
@@ -439,7 +444,10 @@ function expressKernel(): ExpressKernel {
         const wc = ev[2]!;
         wEnd = wc - ee2 * wc;
         restitution = true;
-        if (ee2 === 0) return finish(from, e0) ? step : handOver(rest0, wEnd0, p, done);
+        if (ee2 === 0) {
+          ARG[0] = from;
+          return finish() ? step : handOver(rest0, done);
+        }
       }
       if (restitution) {
         if (start[5]! <= wEnd) {
@@ -448,10 +456,10 @@ function expressKernel(): ExpressKernel {
           ARG[2] = dp;
           ARG[3] = c;
           restitutionEnd();
-          const t = ARG[4]!;
-          return finish(t, e0) ? step : handOver(rest0, wEnd0, p, done);
+          ARG[0] = ARG[4]!;
+          return finish() ? step : handOver(rest0, done);
         }
-        if (start[1]! >= 0) return handOver(rest0, wEnd0, p, done); // vy back at zero: stalled (the solver decides)
+        if (start[1]! >= 0) return handOver(rest0, done); // vy back at zero: stalled (the solver decides)
       }
       q[56] = dp; // (the roots above move it)
       endRest();
@@ -459,24 +467,26 @@ function expressKernel(): ExpressKernel {
       // is below the threshold reaches the step's end before it (to first order in the step), so a
       // dip inside the step shows at its end. (A check in the middle as well never fired over
       // 217,836 impacts, random and structured, and cost 9% of the time.)
-      if (!slipsAbove(s, c, min2)) return handOver(rest0, wEnd0, p, done);
+      if (!slipsAbove(s, c, min2)) return handOver(rest0, done);
       rolling = false;
       p += dp;
     }
     PREV.set(start); // (the state where the last step ended: the solver continues from there)
-    return handOver(restitution, wEnd, p, -maxSteps);
+    STEP[0] = wEnd;
+    STEP[1] = p;
+    return handOver(restitution, -maxSteps);
   }
 
   /**
-   * Records where the solver continues (EXPRESS_HANDOVER, and the state from in EXPRESS_FROM) and
-   * returns code.
+   * Records where the solver continues (EXPRESS_HANDOVER, the work's target and the impulse from
+   * STEP, and the state from PREV in EXPRESS_FROM) and returns code.
    */
-  function handOver(restitution: boolean, wEnd: number, p: number, code: number): number {
+  function handOver(restitution: boolean, code: number): number {
     stateOf(PREV, FROM);
     const h = HANDOVER;
     h.restitution = restitution;
-    h.wEnd = wEnd;
-    h.p = p;
+    h.wEnd = STEP[0]!;
+    h.p = STEP[1]!;
     return code;
   }
 
@@ -496,12 +506,6 @@ function expressKernel(): ExpressKernel {
     return b >= 0 ? (-b - sq) / (2 * a) : (2 * c0) / (sq - b);
   }
 
-  /**
-   * The result at p = t into EXPRESS_OUT; false (the solver continues from the step's start) when
-   * it has more kinetic and rotational energy than e0 (the same sum at the start). The model only
-   * dissipates; near grazing, with e_e near 1, it dissipates so little that the series' error
-   * could show as a gain, which the solver, stepping more finely there, does not make.
-   */
   /**
    * The constants the series functions read (K, cushion-series.ts), for sinθ = s, cosθ = c, the
    * frictions and the slip speed lim at which a shrinking slip's cut is aimed (SERIES_CUT), from
@@ -557,9 +561,17 @@ function expressKernel(): ExpressKernel {
     y[5] = z[5]!;
   }
 
-  function finish(t: number, e0: number): boolean {
+  /**
+   * The result at p = ARG[0] into EXPRESS_OUT (in the state's variables); false (the solver
+   * continues from the step's start) when it has more kinetic and rotational energy than the ball
+   * brought (twice it per unit mass in GEOM[9]). The model only dissipates; near grazing, with
+   * e_e near 1, it dissipates so little that the series' error could show as a gain, which the
+   * solver, stepping more finely there, does not make. (Its arguments through arrays: numbers
+   * passed to a function that is not inlined are boxed.)
+   */
+  function finish(): boolean {
     const o = out;
-    q[56] = t; // q[SERIES_AT]
+    q[56] = ARG[0]!; // q[SERIES_AT]
     valueAt();
     // (stateOf written out on out, a constant of the closure: the compiler then embeds it.)
     const sn = GEOM[0]!;
@@ -570,7 +582,7 @@ function expressKernel(): ExpressKernel {
     o[0] = o[3]! + oy;
     o[2] = o[2]! + sn * vy;
     o[3] = oy;
-    return o[0]! * o[0]! + o[1]! * o[1]! + 0.4 * (o[2]! * o[2]! + o[3]! * o[3]! + o[4]! * o[4]!) <= e0;
+    return o[0]! * o[0]! + o[1]! * o[1]! + 0.4 * (o[2]! * o[2]! + o[3]! * o[3]! + o[4]! * o[4]!) <= GEOM[9]!;
   }
 
   return {

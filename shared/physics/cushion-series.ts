@@ -144,12 +144,12 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     const rC1 = (eCx0 * eCx1 + eCy0 * eCy1) * iC;
     const uCx1 = (eCx1 - rC1 * uCx0) * iC;
     const uCy1 = (eCy1 - rC1 * uCy0) * iC;
-    let cut = rI1 < 0 ? (rI0 - lim) / -rI1 : Infinity;
+    q[54] = Infinity;
+    if (rI1 < 0) q[54] = (rI0 - lim) / -rI1;
     if (rC1 < 0) {
       const cutC = (rC0 - lim) / -rC1;
-      if (cutC < cut) cut = cutC;
+      if (cutC < q[54]!) q[54] = cutC;
     }
-    q[54] = cut;
     const nm1 = kMu * uIy1;
     const hx1 = nm0 * uCx1 + nm1 * uCx0;
     const hy1 = nm0 * uCy1 + nm1 * uCy0;
@@ -421,8 +421,8 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     const rI1 = (eIx0 * eIx1 + eIy0 * eIy1) * iI;
     const uIx1 = (eIx1 - rI1 * uIx0) * iI;
     const uIy1 = (eIy1 - rI1 * uIy0) * iI;
-    const cut = rI1 < 0 ? (rI0 - lim) / -rI1 : Infinity;
-    q[54] = cut;
+    q[54] = Infinity;
+    if (rI1 < 0) q[54] = (rI0 - lim) / -rI1;
     const nm1 = kMu * uIy1;
     const oC1 = 0;
     const Sx1 = 0;
