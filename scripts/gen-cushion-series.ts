@@ -91,16 +91,17 @@ function emit(rolling: boolean): void {
   if (rolling) {
     w(' * cushionSeries for a state whose table slip is zero: the table contact starts to slip, in');
     w(' * the direction its rates take without its own friction (the slip grows at the rate');
-    w(' * λ = |a| - 3.5 μs A along it). False when it would not grow (λ <= 0: it rolls) or the');
-    w(' * table\'s normal impulse is not positive.');
+    w(' * λ = |a| - 3.5 μs A along it). 0 when it would not grow (λ <= 0: it rolls) or the');
+    w(' * table\'s normal impulse is not positive, else 1.');
   } else {
     w(' * Fills q with the series about the variables in start: variable i\'s coefficient of p^k at');
     w(` * q[${N + 1} i + k], and q[SERIES_CUT]. k holds the constants (constants in`);
-    w(' * cushion-express.ts). False, with q unspecified, when the table\'s normal impulse is not');
-    w(' * positive at the start (its clamp at 0 would make the series wrong).');
+    w(' * cushion-express.ts). 1, or 0 with q unspecified when the table\'s normal impulse is not');
+    w(' * positive at the start (its clamp at 0 would make the series wrong). (A number, not a');
+    w(' * boolean: the caller tests a small integer in two instructions, a boolean in a dozen.)');
   }
   w(' */');
-  w(`function ${name}(): boolean {`);
+  w(`function ${name}(): number {`);
   w('  const s = k[0]!;');
   w('  const c = k[1]!;');
   w('  const nmuW = k[2]!;');
@@ -152,7 +153,7 @@ function emit(rolling: boolean): void {
     // -μs A = kMu u_I,y - μs sinθ, and h = -μs A u_C (a product of series).
     if (k === 0) {
       w('  const nm0 = kMu * uIy0 - muSs;');
-      w('  if (!(nm0 < 0)) return false;');
+      w('  if (!(nm0 < 0)) return 0;');
     } else {
       w(`  const nm${k} = kMu * uIy${k};`);
     }
@@ -193,7 +194,7 @@ function emit(rolling: boolean): void {
   }
   w(`  q[${6 * (N + 1) + 1}] = c * y1_${N} * ${1 / (N + 1)};`);
   ['eIx0', 'y1_0', 'eIy0', 'eCx0', 'y4_0', 'y5_0'].forEach((v, i) => w(`  q[${i * (N + 1)}] = ${v};`));
-  w('  return true;');
+  w('  return 1;');
   w('}');
 }
 
@@ -272,7 +273,7 @@ function rollingDirection(k: number): void {
     w('  const aa = aCx0 * aCx0 + aCy0 * aCy0;');
     w('  const an = Math.sqrt(aa);');
     w('  const rC0 = an + 3.5 * nm0;');
-    w('  if (!(rC0 > 0)) return false;');
+    w('  if (!(rC0 > 0)) return 0;');
     w('  const iA = an * (1 / aa);');
     w('  const uCx0 = aCx0 * iA;');
     w('  const uCy0 = aCy0 * iA;');
@@ -330,8 +331,8 @@ w('  /** The six values (valueAt). */');
 w('  readonly out: Float64Array;');
 w('  /** vy, dvy/dp and W (event). */');
 w('  readonly ev: Float64Array;');
-w('  series(): boolean;');
-w('  seriesRolling(): boolean;');
+w('  series(): number;');
+w('  seriesRolling(): number;');
 w('  valueAt(): void;');
 w('  endFirst(): void;');
 w('  endRest(): void;');

@@ -140,6 +140,8 @@ function expressKernel(): ExpressKernel {
   const STEP = new Float64Array(new ArrayBuffer(2 * 8));
   // The last impact's R and h, with their sinθ and cosθ (NaN at first: no match).
   const LAST = new Float64Array(new ArrayBuffer(4 * 8)).fill(NaN);
+  // sinθ, cosθ, μs and μw of the series' constants K[0..11] and K[17] (NaN at first: no match).
+  const KEY = new Float64Array(new ArrayBuffer(4 * 8)).fill(NaN);
   const FROM = new Float64Array(new ArrayBuffer(6 * 8));
   // The tuning constants as constants of the closure, which the compiler embeds: a module-level
   // binding is a context slot (the bundler makes a module's `const` a `var`) that the optimized
@@ -370,7 +372,7 @@ function expressKernel(): ExpressKernel {
       PREV[3] = start[3]!;
       PREV[4] = start[4]!;
       PREV[5] = start[5]!;
-      if (!(rolling ? seriesRolling() : series())) return handOver(rest0, done);
+      if ((rolling ? seriesRolling() : series()) === 0) return handOver(rest0, done);
       // The step from the series' two last terms (after Jorba and Zou 2005): the largest h with
       // |a_k L^k| (h / L)^8 within the tolerance for k = 7 and 8, each variable against its weight.
       // The largest weighted coefficients of p^6, p^7 and p^8 (q[9 i + k], SERIES_TERMS = 9: the
@@ -519,26 +521,34 @@ function expressKernel(): ExpressKernel {
     const c = GEOM[1]!;
     const muS = GEOM[2]!;
     const muW = GEOM[3]!;
-    K[0] = s;
-    K[1] = c;
-    K[2] = -muW;
-    K[3] = -(muS * c * muW);
-    K[4] = muS * s;
-    K[5] = -3.5 * muW;
-    K[6] = 1 - 2.5 * s;
-    K[7] = -(s * s + 2.5) * muW;
-    K[8] = 2.5 - s;
-    K[9] = -(1 - 2.5 * s) * muW;
-    K[10] = -(2.5 - s) * muW;
-    K[11] = s * c;
+    // Those of the table's constants alone are kept while sinθ, cosθ and the frictions are the
+    // same as the last impact's (KEY).
+    if (!(s === KEY[0] && c === KEY[1] && muS === KEY[2] && muW === KEY[3])) {
+      K[0] = s;
+      K[1] = c;
+      K[2] = -muW;
+      K[3] = -(muS * c * muW);
+      K[4] = muS * s;
+      K[5] = -3.5 * muW;
+      K[6] = 1 - 2.5 * s;
+      K[7] = -(s * s + 2.5) * muW;
+      K[8] = 2.5 - s;
+      K[9] = -(1 - 2.5 * s) * muW;
+      K[10] = -(2.5 - s) * muW;
+      K[11] = s * c;
+      K[17] = 1 / (1 + s);
+      KEY[0] = s;
+      KEY[1] = c;
+      KEY[2] = muS;
+      KEY[3] = muW;
+    }
     K[12] = GEOM[4]!;
-    // The step's choice's weights (SERIES_NORMS): the speeds', the work's, L^6, L^7, and
-    // 1 / (1 + sinθ) (stateNorm).
+    // The step's choice's weights (SERIES_NORMS): the speeds', the work's, L^6, L^7 (and K[17],
+    // 1 / (1 + sinθ), for stateNorm).
     K[13] = GEOM[5]!;
     K[14] = GEOM[6]!;
     K[15] = GEOM[7]!;
     K[16] = GEOM[8]!;
-    K[17] = 1 / (1 + s);
   }
 
   /**

@@ -54,8 +54,8 @@ export interface CushionSeriesKernel {
   readonly out: Float64Array;
   /** vy, dvy/dp and W (event). */
   readonly ev: Float64Array;
-  series(): boolean;
-  seriesRolling(): boolean;
+  series(): number;
+  seriesRolling(): number;
   valueAt(): void;
   endFirst(): void;
   endRest(): void;
@@ -78,10 +78,11 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
   /**
    * Fills q with the series about the variables in start: variable i's coefficient of p^k at
    * q[9 i + k], and q[SERIES_CUT]. k holds the constants (constants in
-   * cushion-express.ts). False, with q unspecified, when the table's normal impulse is not
-   * positive at the start (its clamp at 0 would make the series wrong).
+   * cushion-express.ts). 1, or 0 with q unspecified when the table's normal impulse is not
+   * positive at the start (its clamp at 0 would make the series wrong). (A number, not a
+   * boolean: the caller tests a small integer in two instructions, a boolean in a dozen.)
    */
-  function cushionSeries(): boolean {
+  function cushionSeries(): number {
     const s = k[0]!;
     const c = k[1]!;
     const nmuW = k[2]!;
@@ -119,7 +120,7 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     const uCx0 = eCx0 * iC;
     const uCy0 = eCy0 * iC;
     const nm0 = kMu * uIy0 - muSs;
-    if (!(nm0 < 0)) return false;
+    if (!(nm0 < 0)) return 0;
     const hx0 = nm0 * uCx0;
     const hy0 = nm0 * uCy0;
     const eIx1 = (wIx * uIx0 + zIx * hx0);
@@ -348,16 +349,16 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[27] = eCx0;
     q[36] = y4_0;
     q[45] = y5_0;
-    return true;
+    return 1;
   }
 
   /**
    * cushionSeries for a state whose table slip is zero: the table contact starts to slip, in
    * the direction its rates take without its own friction (the slip grows at the rate
-   * λ = |a| - 3.5 μs A along it). False when it would not grow (λ <= 0: it rolls) or the
-   * table's normal impulse is not positive.
+   * λ = |a| - 3.5 μs A along it). 0 when it would not grow (λ <= 0: it rolls) or the
+   * table's normal impulse is not positive, else 1.
    */
-  function cushionSeriesRolling(): boolean {
+  function cushionSeriesRolling(): number {
     const s = k[0]!;
     const c = k[1]!;
     const nmuW = k[2]!;
@@ -389,13 +390,13 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     const uIx0 = eIx0 * iI;
     const uIy0 = eIy0 * iI;
     const nm0 = kMu * uIy0 - muSs;
-    if (!(nm0 < 0)) return false;
+    if (!(nm0 < 0)) return 0;
     const aCx0 = wCx * uIx0;
     const aCy0 = wCy * uIy0 - c;
     const aa = aCx0 * aCx0 + aCy0 * aCy0;
     const an = Math.sqrt(aa);
     const rC0 = an + 3.5 * nm0;
-    if (!(rC0 > 0)) return false;
+    if (!(rC0 > 0)) return 0;
     const iA = an * (1 / aa);
     const uCx0 = aCx0 * iA;
     const uCy0 = aCy0 * iA;
@@ -696,7 +697,7 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[27] = eCx0;
     q[36] = y4_0;
     q[45] = y5_0;
-    return true;
+    return 1;
   }
 
   /** The six variables of q at p = q[SERIES_AT] into out (Estrin's scheme, the six side by side; the work to p^9). */

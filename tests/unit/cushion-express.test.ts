@@ -40,7 +40,7 @@ function variables(y: ArrayLike<number>): number[] {
 /** The series about the internal state y into q (false: the table's normal impulse would not be positive). */
 function seriesAbout(y: Float64Array): boolean {
   S.start.set(variables(y));
-  return S.series();
+  return S.series() === 1;
 }
 
 /** The series q at p = t into out. */
