@@ -20,6 +20,8 @@ import { writeFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 
 const N = 8;
+/** Where the per-order constants start in k (see SERIES_ORDER_K). */
+const ORDER_K = 18;
 
 /** A balanced sum of the terms (shorter dependency chains than a running sum). */
 function tree(terms: string[]): string {
@@ -104,15 +106,13 @@ function emit(rolling: boolean): void {
   w(`function ${name}(): number {`);
   w('  const s = k[0]!;');
   w('  const c = k[1]!;');
-  w('  const nmuW = k[2]!;');
   w('  const kMu = k[3]!;');
   w('  const muSs = k[4]!;');
-  w('  const wIx = k[5]!;');
-  w('  const zIx = k[6]!;');
-  w('  const wIy = k[7]!;');
-  w('  const zIy = k[8]!;');
-  w('  const wCx = k[9]!;');
-  w('  const wCy = k[10]!;');
+  if (rolling) {
+    // (The other weights of the slips' rates are read per order, divided by k + 1: ORDER_K.)
+    w('  const wCx = k[9]!;');
+    w('  const wCy = k[10]!;');
+  }
   w('  const sc = k[11]!;');
   w('  const lim = k[12]!;');
   w('  const iv = k[13]!;');
@@ -168,27 +168,30 @@ function emit(rolling: boolean): void {
       else if (old.length > 0) w(`  const h${comp}${k} = (${tree(old)} + nm0 * uC${comp}${k}) + nm${k} * uC${comp}0;`);
       else w(`  const h${comp}${k} = nm0 * uC${comp}${k} + nm${k} * uC${comp}0;`);
     }
+    // The next coefficients with each order's weights divided by k + 1 beforehand (SERIES_ORDER_K:
+    // one product fewer on the chain from one order to the next, and fewer products).
+    const b = ORDER_K + 9 * k;
+    const kk = (i: number): string => `k[${b + i}]!`;
     const inv = k === 0 ? '' : ` * ${1 / (k + 1)}`;
+    const c35 = `${3.5 / (k + 1)}`;
     // The slips' next coefficients first (they carry the chain), then vy's, R ωz's and the
     // work's. (The table slip's y only carries the chain: the last order does not need it.)
-    w(`  const eIx${k + 1} = (wIx * uIx${k} + zIx * hx${k})${inv};`);
-    w(`  const eIy${k + 1} = (${k === 0 ? 'sc + ' : ''}wIy * uIy${k} + zIy * hy${k})${inv};`);
+    w(`  const eIx${k + 1} = ${kk(0)} * uIx${k} + ${kk(1)} * hx${k};`);
+    w(`  const eIy${k + 1} = ${k === 0 ? 'sc + ' : ''}${kk(2)} * uIy${k} + ${kk(3)} * hy${k};`);
     if (!rolling) {
-      w(`  const eCx${k + 1} = (wCx * uIx${k} + 3.5 * hx${k})${inv};`);
-      if (k + 1 < N) w(`  const eCy${k + 1} = (wCy * uIy${k}${k === 0 ? ' - c' : ''} + 3.5 * hy${k})${inv};`);
+      w(`  const eCx${k + 1} = ${kk(4)} * uIx${k} + ${c35} * hx${k};`);
+      if (k + 1 < N) w(`  const eCy${k + 1} = ${kk(5)} * uIy${k}${k === 0 ? ' - c' : ''} + ${c35} * hy${k};`);
     }
-    w(`  const gx${k} = nmuW * uIx${k};`);
-    w(`  const gy${k} = nmuW * uIy${k};`);
     const o = (i: number): number => i * (N + 1) + k + 1;
     w(`  q[${o(0)}] = eIx${k + 1};`);
-    w(`  const y1_${k + 1} = (${k === 0 ? '-c - s * gy0 + hy0' : `hy${k} - s * gy${k}`})${inv};`);
+    w(`  const y1_${k + 1} = ${k === 0 ? '-c + hy0' : `hy${k}${inv}`} + ${kk(6)} * uIy${k};`);
     w(`  q[${o(1)}] = y1_${k + 1};`);
     w(`  q[${o(2)}] = eIy${k + 1};`);
     // (A table slip growing from zero, e_C = p w: its coefficient of p^(k+1) is w_k.)
     w(`  q[${o(3)}] = ${rolling ? `wCx${k}` : `eCx${k + 1}`};`);
-    w(`  const oz${k + 1} = -2.5 * c * gx${k}${inv};`);
+    w(`  const oz${k + 1} = ${kk(7)} * uIx${k};`);
     w(`  q[${o(4)}] = oz${k + 1};`);
-    w(`  const W${k + 1} = c * y1_${k}${inv};`);
+    w(`  const W${k + 1} = ${kk(8)} * y1_${k};`);
     w(`  q[${o(5)}] = W${k + 1};`);
     if (k + 1 === N - 1) stepNorms(rolling);
   }
@@ -301,8 +304,9 @@ function rollingDirection(k: number): void {
     w(`  const S${comp}${k} = ${S.length > 0 ? tree(S) : '0'};`);
     w(`  const H${comp}${k} = ${H.length > 0 ? tree(H) : '0'};`);
   }
-  w(`  const Bx${k} = (wCx * uIx${k} + 3.5 * (nm${k} * uCx0 + Hx${k})) * ${inv};`);
-  w(`  const By${k} = (wCy * uIy${k} + 3.5 * (nm${k} * uCy0 + Hy${k})) * ${inv};`);
+  // (The weights divided by k + 1 beforehand: ORDER_K.)
+  w(`  const Bx${k} = k[${ORDER_K + 9 * k + 4}]! * uIx${k} + ${3.5 * inv} * (nm${k} * uCx0 + Hx${k});`);
+  w(`  const By${k} = k[${ORDER_K + 9 * k + 5}]! * uIy${k} + ${3.5 * inv} * (nm${k} * uCy0 + Hy${k});`);
   w(`  const beta${k} = 3.5 * ${inv} * nm0 * iC;`);
   // (1 - β_k) is known from order 0: its reciprocal stays off the chain that w_k is on.
   w(`  const dB${k} = 1 / (1 - beta${k});`);
@@ -317,7 +321,12 @@ function rollingDirection(k: number): void {
 }
 
 w('/** The series constants\' count (constants in cushion-express.ts). */');
-w('export const SERIES_CONSTANTS = 18;');
+w('/**');
+w(' * Where the series\' constants have each order\'s weights divided by k + 1 (9 an order, orders 0 to');
+w(` * ${N - 1}: constants in cushion-express.ts).`);
+w(' */');
+w(`export const SERIES_ORDER_K = ${ORDER_K};`);
+w(`export const SERIES_CONSTANTS = ${ORDER_K + 9 * N};`);
 w('');
 w('/** The series kernel: its arrays and the functions that fill and evaluate them. */');
 w('export interface CushionSeriesKernel {');

@@ -22,7 +22,7 @@
 // energy than the ball brought (see finish).
 import { ZERO_FRACTION } from './cushion-control.ts';
 import { ROOT_MOVE } from './cushion-dense.ts';
-import { cushionSeriesKernel } from './cushion-series.ts';
+import { cushionSeriesKernel, SERIES_ORDER_K, SERIES_TERMS } from './cushion-series.ts';
 import type { CushionSeriesKernel } from './cushion-series.ts';
 
 /**
@@ -537,6 +537,21 @@ function expressKernel(): ExpressKernel {
       K[10] = -(2.5 - s) * muW;
       K[11] = s * c;
       K[17] = 1 / (1 + s);
+      // Each order's weights divided by k + 1 (SERIES_ORDER_K): of u_I and h in the slips' next
+      // coefficients, of u_I,y in vy's (-sinθ (-μw)), of u_I,x in R ωz's (-2.5 cosθ (-μw)), and
+      // of vy in the work's (cosθ).
+      for (let o = 0, b = SERIES_ORDER_K; o < SERIES_TERMS - 1; o++, b += 9) {
+        const inv = 1 / (o + 1);
+        K[b] = K[5]! * inv;
+        K[b + 1] = K[6]! * inv;
+        K[b + 2] = K[7]! * inv;
+        K[b + 3] = K[8]! * inv;
+        K[b + 4] = K[9]! * inv;
+        K[b + 5] = K[10]! * inv;
+        K[b + 6] = s * muW * inv;
+        K[b + 7] = 2.5 * c * muW * inv;
+        K[b + 8] = c * inv;
+      }
       KEY[0] = s;
       KEY[1] = c;
       KEY[2] = muS;
