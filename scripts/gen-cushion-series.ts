@@ -230,23 +230,30 @@ function directions(k: number, C: string, X: string, Y: string): void {
     w(`  const i${C} = r${C}0 * (1 / ss${C});`);
     w(`  const u${C}x0 = ${X}0 * i${C};`);
     w(`  const u${C}y0 = ${Y}0 * i${C};`);
+    // u_0 / r_0², for the newest term of u_k below.
+    w(`  const i2${C} = i${C} * i${C};`);
+    w(`  const v${C}x = u${C}x0 * i2${C};`);
+    w(`  const v${C}y = u${C}y0 * i2${C};`);
     return;
   }
-  // r_k r_0 = e_0 · e_k + Σ_{0<j<k/2} (e_j · e_{k-j} - r_j r_{k-j}) + ½ (e_{k/2}² - r_{k/2}²)
+  // ρ_k = r_k r_0 = e_0 · e_k + Σ_{0<j<k/2} (e_j · e_{k-j} - r_j r_{k-j}) + ½ (e_{k/2}² - r_{k/2}²)
   // (k even): the square-root recurrence halved, its older terms summed first.
   const old = olderRootTerms(k, C, X, Y);
   const newest = `${X}0 * ${X}${k} + ${Y}0 * ${Y}${k}`;
   if (old.length > 0) {
     w(`  const o${C}${k} = ${tree(old)};`);
-    w(`  const r${C}${k} = (o${C}${k} + ${newest}) * i${C};`);
+    w(`  const rho${C}${k} = o${C}${k} + ${newest};`);
   } else {
-    w(`  const r${C}${k} = (${newest}) * i${C};`);
+    w(`  const rho${C}${k} = ${newest};`);
   }
+  w(`  const r${C}${k} = rho${C}${k} * i${C};`);
+  // u_k = (e_k - Σ_{0<j<k} r_j u_{k-j}) / r_0 - ρ_k u_0 / r_0² (r_k = ρ_k / r_0): the newest term from ρ_k, not
+  // from r_k (two products and a difference after e_k's where there were four operations).
   for (const [comp, E] of [['x', X], ['y', Y]] as const) {
     const terms: string[] = [];
     for (let j = 1; j < k; j++) terms.push(`r${C}${j} * u${C}${comp}${k - j}`);
-    const head = terms.length > 0 ? `${E}${k} - ${tree(terms)}` : `${E}${k}`;
-    w(`  const u${C}${comp}${k} = (${head} - r${C}${k} * u${C}${comp}0) * i${C};`);
+    const head = terms.length > 0 ? `(${E}${k} - ${tree(terms)})` : `${E}${k}`;
+    w(`  const u${C}${comp}${k} = ${head} * i${C} - v${C}${comp} * rho${C}${k};`);
   }
 }
 

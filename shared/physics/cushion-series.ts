@@ -112,11 +112,17 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     const iI = rI0 * (1 / ssI);
     const uIx0 = eIx0 * iI;
     const uIy0 = eIy0 * iI;
+    const i2I = iI * iI;
+    const vIx = uIx0 * i2I;
+    const vIy = uIy0 * i2I;
     const ssC = eCx0 * eCx0 + eCy0 * eCy0;
     const rC0 = Math.sqrt(ssC);
     const iC = rC0 * (1 / ssC);
     const uCx0 = eCx0 * iC;
     const uCy0 = eCy0 * iC;
+    const i2C = iC * iC;
+    const vCx = uCx0 * i2C;
+    const vCy = uCy0 * i2C;
     const nm0 = kMu * uIy0 - muSs;
     if (!(nm0 < 0)) return 0;
     const hx0 = nm0 * uCx0;
@@ -135,12 +141,14 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     const W1 = k[26]! * y1_0;
     q[46] = W1;
     // Order 1.
-    const rI1 = (eIx0 * eIx1 + eIy0 * eIy1) * iI;
-    const uIx1 = (eIx1 - rI1 * uIx0) * iI;
-    const uIy1 = (eIy1 - rI1 * uIy0) * iI;
-    const rC1 = (eCx0 * eCx1 + eCy0 * eCy1) * iC;
-    const uCx1 = (eCx1 - rC1 * uCx0) * iC;
-    const uCy1 = (eCy1 - rC1 * uCy0) * iC;
+    const rhoI1 = eIx0 * eIx1 + eIy0 * eIy1;
+    const rI1 = rhoI1 * iI;
+    const uIx1 = eIx1 * iI - vIx * rhoI1;
+    const uIy1 = eIy1 * iI - vIy * rhoI1;
+    const rhoC1 = eCx0 * eCx1 + eCy0 * eCy1;
+    const rC1 = rhoC1 * iC;
+    const uCx1 = eCx1 * iC - vCx * rhoC1;
+    const uCy1 = eCy1 * iC - vCy * rhoC1;
     q[54] = Infinity;
     if (rI1 < 0) q[54] = (rI0 - lim) / -rI1;
     if (rC1 < 0) {
@@ -165,13 +173,15 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[47] = W2;
     // Order 2.
     const oI2 = 0.5 * (eIx1 * eIx1 + eIy1 * eIy1 - rI1 * rI1);
-    const rI2 = (oI2 + eIx0 * eIx2 + eIy0 * eIy2) * iI;
-    const uIx2 = (eIx2 - rI1 * uIx1 - rI2 * uIx0) * iI;
-    const uIy2 = (eIy2 - rI1 * uIy1 - rI2 * uIy0) * iI;
+    const rhoI2 = oI2 + eIx0 * eIx2 + eIy0 * eIy2;
+    const rI2 = rhoI2 * iI;
+    const uIx2 = (eIx2 - rI1 * uIx1) * iI - vIx * rhoI2;
+    const uIy2 = (eIy2 - rI1 * uIy1) * iI - vIy * rhoI2;
     const oC2 = 0.5 * (eCx1 * eCx1 + eCy1 * eCy1 - rC1 * rC1);
-    const rC2 = (oC2 + eCx0 * eCx2 + eCy0 * eCy2) * iC;
-    const uCx2 = (eCx2 - rC1 * uCx1 - rC2 * uCx0) * iC;
-    const uCy2 = (eCy2 - rC1 * uCy1 - rC2 * uCy0) * iC;
+    const rhoC2 = oC2 + eCx0 * eCx2 + eCy0 * eCy2;
+    const rC2 = rhoC2 * iC;
+    const uCx2 = (eCx2 - rC1 * uCx1) * iC - vCx * rhoC2;
+    const uCy2 = (eCy2 - rC1 * uCy1) * iC - vCy * rhoC2;
     const nm2 = kMu * uIy2;
     const hx2 = (nm1 * uCx1 + nm0 * uCx2) + nm2 * uCx0;
     const hy2 = (nm1 * uCy1 + nm0 * uCy2) + nm2 * uCy0;
@@ -190,13 +200,15 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[48] = W3;
     // Order 3.
     const oI3 = eIx1 * eIx2 + eIy1 * eIy2 - rI1 * rI2;
-    const rI3 = (oI3 + eIx0 * eIx3 + eIy0 * eIy3) * iI;
-    const uIx3 = (eIx3 - (rI1 * uIx2 + rI2 * uIx1) - rI3 * uIx0) * iI;
-    const uIy3 = (eIy3 - (rI1 * uIy2 + rI2 * uIy1) - rI3 * uIy0) * iI;
+    const rhoI3 = oI3 + eIx0 * eIx3 + eIy0 * eIy3;
+    const rI3 = rhoI3 * iI;
+    const uIx3 = (eIx3 - (rI1 * uIx2 + rI2 * uIx1)) * iI - vIx * rhoI3;
+    const uIy3 = (eIy3 - (rI1 * uIy2 + rI2 * uIy1)) * iI - vIy * rhoI3;
     const oC3 = eCx1 * eCx2 + eCy1 * eCy2 - rC1 * rC2;
-    const rC3 = (oC3 + eCx0 * eCx3 + eCy0 * eCy3) * iC;
-    const uCx3 = (eCx3 - (rC1 * uCx2 + rC2 * uCx1) - rC3 * uCx0) * iC;
-    const uCy3 = (eCy3 - (rC1 * uCy2 + rC2 * uCy1) - rC3 * uCy0) * iC;
+    const rhoC3 = oC3 + eCx0 * eCx3 + eCy0 * eCy3;
+    const rC3 = rhoC3 * iC;
+    const uCx3 = (eCx3 - (rC1 * uCx2 + rC2 * uCx1)) * iC - vCx * rhoC3;
+    const uCy3 = (eCy3 - (rC1 * uCy2 + rC2 * uCy1)) * iC - vCy * rhoC3;
     const nm3 = kMu * uIy3;
     const hx3 = ((nm1 * uCx2 + nm2 * uCx1) + nm0 * uCx3) + nm3 * uCx0;
     const hy3 = ((nm1 * uCy2 + nm2 * uCy1) + nm0 * uCy3) + nm3 * uCy0;
@@ -215,13 +227,15 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[49] = W4;
     // Order 4.
     const oI4 = (eIx1 * eIx3 + eIy1 * eIy3 - rI1 * rI3 + 0.5 * (eIx2 * eIx2 + eIy2 * eIy2 - rI2 * rI2));
-    const rI4 = (oI4 + eIx0 * eIx4 + eIy0 * eIy4) * iI;
-    const uIx4 = (eIx4 - ((rI1 * uIx3 + rI2 * uIx2) + rI3 * uIx1) - rI4 * uIx0) * iI;
-    const uIy4 = (eIy4 - ((rI1 * uIy3 + rI2 * uIy2) + rI3 * uIy1) - rI4 * uIy0) * iI;
+    const rhoI4 = oI4 + eIx0 * eIx4 + eIy0 * eIy4;
+    const rI4 = rhoI4 * iI;
+    const uIx4 = (eIx4 - ((rI1 * uIx3 + rI2 * uIx2) + rI3 * uIx1)) * iI - vIx * rhoI4;
+    const uIy4 = (eIy4 - ((rI1 * uIy3 + rI2 * uIy2) + rI3 * uIy1)) * iI - vIy * rhoI4;
     const oC4 = (eCx1 * eCx3 + eCy1 * eCy3 - rC1 * rC3 + 0.5 * (eCx2 * eCx2 + eCy2 * eCy2 - rC2 * rC2));
-    const rC4 = (oC4 + eCx0 * eCx4 + eCy0 * eCy4) * iC;
-    const uCx4 = (eCx4 - ((rC1 * uCx3 + rC2 * uCx2) + rC3 * uCx1) - rC4 * uCx0) * iC;
-    const uCy4 = (eCy4 - ((rC1 * uCy3 + rC2 * uCy2) + rC3 * uCy1) - rC4 * uCy0) * iC;
+    const rhoC4 = oC4 + eCx0 * eCx4 + eCy0 * eCy4;
+    const rC4 = rhoC4 * iC;
+    const uCx4 = (eCx4 - ((rC1 * uCx3 + rC2 * uCx2) + rC3 * uCx1)) * iC - vCx * rhoC4;
+    const uCy4 = (eCy4 - ((rC1 * uCy3 + rC2 * uCy2) + rC3 * uCy1)) * iC - vCy * rhoC4;
     const nm4 = kMu * uIy4;
     const hx4 = (((nm1 * uCx3 + nm2 * uCx2) + nm3 * uCx1) + nm0 * uCx4) + nm4 * uCx0;
     const hy4 = (((nm1 * uCy3 + nm2 * uCy2) + nm3 * uCy1) + nm0 * uCy4) + nm4 * uCy0;
@@ -240,13 +254,15 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[50] = W5;
     // Order 5.
     const oI5 = (eIx1 * eIx4 + eIy1 * eIy4 - rI1 * rI4 + eIx2 * eIx3 + eIy2 * eIy3 - rI2 * rI3);
-    const rI5 = (oI5 + eIx0 * eIx5 + eIy0 * eIy5) * iI;
-    const uIx5 = (eIx5 - ((rI1 * uIx4 + rI2 * uIx3) + (rI3 * uIx2 + rI4 * uIx1)) - rI5 * uIx0) * iI;
-    const uIy5 = (eIy5 - ((rI1 * uIy4 + rI2 * uIy3) + (rI3 * uIy2 + rI4 * uIy1)) - rI5 * uIy0) * iI;
+    const rhoI5 = oI5 + eIx0 * eIx5 + eIy0 * eIy5;
+    const rI5 = rhoI5 * iI;
+    const uIx5 = (eIx5 - ((rI1 * uIx4 + rI2 * uIx3) + (rI3 * uIx2 + rI4 * uIx1))) * iI - vIx * rhoI5;
+    const uIy5 = (eIy5 - ((rI1 * uIy4 + rI2 * uIy3) + (rI3 * uIy2 + rI4 * uIy1))) * iI - vIy * rhoI5;
     const oC5 = (eCx1 * eCx4 + eCy1 * eCy4 - rC1 * rC4 + eCx2 * eCx3 + eCy2 * eCy3 - rC2 * rC3);
-    const rC5 = (oC5 + eCx0 * eCx5 + eCy0 * eCy5) * iC;
-    const uCx5 = (eCx5 - ((rC1 * uCx4 + rC2 * uCx3) + (rC3 * uCx2 + rC4 * uCx1)) - rC5 * uCx0) * iC;
-    const uCy5 = (eCy5 - ((rC1 * uCy4 + rC2 * uCy3) + (rC3 * uCy2 + rC4 * uCy1)) - rC5 * uCy0) * iC;
+    const rhoC5 = oC5 + eCx0 * eCx5 + eCy0 * eCy5;
+    const rC5 = rhoC5 * iC;
+    const uCx5 = (eCx5 - ((rC1 * uCx4 + rC2 * uCx3) + (rC3 * uCx2 + rC4 * uCx1))) * iC - vCx * rhoC5;
+    const uCy5 = (eCy5 - ((rC1 * uCy4 + rC2 * uCy3) + (rC3 * uCy2 + rC4 * uCy1))) * iC - vCy * rhoC5;
     const nm5 = kMu * uIy5;
     const hx5 = (((nm1 * uCx4 + nm2 * uCx3) + (nm3 * uCx2 + nm4 * uCx1)) + nm0 * uCx5) + nm5 * uCx0;
     const hy5 = (((nm1 * uCy4 + nm2 * uCy3) + (nm3 * uCy2 + nm4 * uCy1)) + nm0 * uCy5) + nm5 * uCy0;
@@ -265,13 +281,15 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[51] = W6;
     // Order 6.
     const oI6 = ((eIx1 * eIx5 + eIy1 * eIy5 - rI1 * rI5 + eIx2 * eIx4 + eIy2 * eIy4 - rI2 * rI4) + 0.5 * (eIx3 * eIx3 + eIy3 * eIy3 - rI3 * rI3));
-    const rI6 = (oI6 + eIx0 * eIx6 + eIy0 * eIy6) * iI;
-    const uIx6 = (eIx6 - (((rI1 * uIx5 + rI2 * uIx4) + (rI3 * uIx3 + rI4 * uIx2)) + rI5 * uIx1) - rI6 * uIx0) * iI;
-    const uIy6 = (eIy6 - (((rI1 * uIy5 + rI2 * uIy4) + (rI3 * uIy3 + rI4 * uIy2)) + rI5 * uIy1) - rI6 * uIy0) * iI;
+    const rhoI6 = oI6 + eIx0 * eIx6 + eIy0 * eIy6;
+    const rI6 = rhoI6 * iI;
+    const uIx6 = (eIx6 - (((rI1 * uIx5 + rI2 * uIx4) + (rI3 * uIx3 + rI4 * uIx2)) + rI5 * uIx1)) * iI - vIx * rhoI6;
+    const uIy6 = (eIy6 - (((rI1 * uIy5 + rI2 * uIy4) + (rI3 * uIy3 + rI4 * uIy2)) + rI5 * uIy1)) * iI - vIy * rhoI6;
     const oC6 = ((eCx1 * eCx5 + eCy1 * eCy5 - rC1 * rC5 + eCx2 * eCx4 + eCy2 * eCy4 - rC2 * rC4) + 0.5 * (eCx3 * eCx3 + eCy3 * eCy3 - rC3 * rC3));
-    const rC6 = (oC6 + eCx0 * eCx6 + eCy0 * eCy6) * iC;
-    const uCx6 = (eCx6 - (((rC1 * uCx5 + rC2 * uCx4) + (rC3 * uCx3 + rC4 * uCx2)) + rC5 * uCx1) - rC6 * uCx0) * iC;
-    const uCy6 = (eCy6 - (((rC1 * uCy5 + rC2 * uCy4) + (rC3 * uCy3 + rC4 * uCy2)) + rC5 * uCy1) - rC6 * uCy0) * iC;
+    const rhoC6 = oC6 + eCx0 * eCx6 + eCy0 * eCy6;
+    const rC6 = rhoC6 * iC;
+    const uCx6 = (eCx6 - (((rC1 * uCx5 + rC2 * uCx4) + (rC3 * uCx3 + rC4 * uCx2)) + rC5 * uCx1)) * iC - vCx * rhoC6;
+    const uCy6 = (eCy6 - (((rC1 * uCy5 + rC2 * uCy4) + (rC3 * uCy3 + rC4 * uCy2)) + rC5 * uCy1)) * iC - vCy * rhoC6;
     const nm6 = kMu * uIy6;
     const hx6 = ((((nm1 * uCx5 + nm2 * uCx4) + (nm3 * uCx3 + nm4 * uCx2)) + nm5 * uCx1) + nm0 * uCx6) + nm6 * uCx0;
     const hy6 = ((((nm1 * uCy5 + nm2 * uCy4) + (nm3 * uCy3 + nm4 * uCy2)) + nm5 * uCy1) + nm0 * uCy6) + nm6 * uCy0;
@@ -302,13 +320,15 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[59] = Math.sqrt(Math.sqrt(Math.sqrt(n7)));
     // Order 7.
     const oI7 = ((eIx1 * eIx6 + eIy1 * eIy6 - rI1 * rI6 + eIx2 * eIx5 + eIy2 * eIy5 - rI2 * rI5) + eIx3 * eIx4 + eIy3 * eIy4 - rI3 * rI4);
-    const rI7 = (oI7 + eIx0 * eIx7 + eIy0 * eIy7) * iI;
-    const uIx7 = (eIx7 - (((rI1 * uIx6 + rI2 * uIx5) + (rI3 * uIx4 + rI4 * uIx3)) + (rI5 * uIx2 + rI6 * uIx1)) - rI7 * uIx0) * iI;
-    const uIy7 = (eIy7 - (((rI1 * uIy6 + rI2 * uIy5) + (rI3 * uIy4 + rI4 * uIy3)) + (rI5 * uIy2 + rI6 * uIy1)) - rI7 * uIy0) * iI;
+    const rhoI7 = oI7 + eIx0 * eIx7 + eIy0 * eIy7;
+    const rI7 = rhoI7 * iI;
+    const uIx7 = (eIx7 - (((rI1 * uIx6 + rI2 * uIx5) + (rI3 * uIx4 + rI4 * uIx3)) + (rI5 * uIx2 + rI6 * uIx1))) * iI - vIx * rhoI7;
+    const uIy7 = (eIy7 - (((rI1 * uIy6 + rI2 * uIy5) + (rI3 * uIy4 + rI4 * uIy3)) + (rI5 * uIy2 + rI6 * uIy1))) * iI - vIy * rhoI7;
     const oC7 = ((eCx1 * eCx6 + eCy1 * eCy6 - rC1 * rC6 + eCx2 * eCx5 + eCy2 * eCy5 - rC2 * rC5) + eCx3 * eCx4 + eCy3 * eCy4 - rC3 * rC4);
-    const rC7 = (oC7 + eCx0 * eCx7 + eCy0 * eCy7) * iC;
-    const uCx7 = (eCx7 - (((rC1 * uCx6 + rC2 * uCx5) + (rC3 * uCx4 + rC4 * uCx3)) + (rC5 * uCx2 + rC6 * uCx1)) - rC7 * uCx0) * iC;
-    const uCy7 = (eCy7 - (((rC1 * uCy6 + rC2 * uCy5) + (rC3 * uCy4 + rC4 * uCy3)) + (rC5 * uCy2 + rC6 * uCy1)) - rC7 * uCy0) * iC;
+    const rhoC7 = oC7 + eCx0 * eCx7 + eCy0 * eCy7;
+    const rC7 = rhoC7 * iC;
+    const uCx7 = (eCx7 - (((rC1 * uCx6 + rC2 * uCx5) + (rC3 * uCx4 + rC4 * uCx3)) + (rC5 * uCx2 + rC6 * uCx1))) * iC - vCx * rhoC7;
+    const uCy7 = (eCy7 - (((rC1 * uCy6 + rC2 * uCy5) + (rC3 * uCy4 + rC4 * uCy3)) + (rC5 * uCy2 + rC6 * uCy1))) * iC - vCy * rhoC7;
     const nm7 = kMu * uIy7;
     const hx7 = ((((nm1 * uCx6 + nm2 * uCx5) + (nm3 * uCx4 + nm4 * uCx3)) + (nm5 * uCx2 + nm6 * uCx1)) + nm0 * uCx7) + nm7 * uCx0;
     const hy7 = ((((nm1 * uCy6 + nm2 * uCy5) + (nm3 * uCy4 + nm4 * uCy3)) + (nm5 * uCy2 + nm6 * uCy1)) + nm0 * uCy7) + nm7 * uCy0;
@@ -366,6 +386,9 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     const iI = rI0 * (1 / ssI);
     const uIx0 = eIx0 * iI;
     const uIy0 = eIy0 * iI;
+    const i2I = iI * iI;
+    const vIx = uIx0 * i2I;
+    const vIy = uIy0 * i2I;
     const nm0 = kMu * uIy0 - muSs;
     if (!(nm0 < 0)) return 0;
     const aCx0 = wCx * uIx0;
@@ -394,9 +417,10 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     const W1 = k[26]! * y1_0;
     q[46] = W1;
     // Order 1.
-    const rI1 = (eIx0 * eIx1 + eIy0 * eIy1) * iI;
-    const uIx1 = (eIx1 - rI1 * uIx0) * iI;
-    const uIy1 = (eIy1 - rI1 * uIy0) * iI;
+    const rhoI1 = eIx0 * eIx1 + eIy0 * eIy1;
+    const rI1 = rhoI1 * iI;
+    const uIx1 = eIx1 * iI - vIx * rhoI1;
+    const uIy1 = eIy1 * iI - vIy * rhoI1;
     q[54] = Infinity;
     if (rI1 < 0) q[54] = (rI0 - lim) / -rI1;
     const nm1 = kMu * uIy1;
@@ -431,9 +455,10 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[47] = W2;
     // Order 2.
     const oI2 = 0.5 * (eIx1 * eIx1 + eIy1 * eIy1 - rI1 * rI1);
-    const rI2 = (oI2 + eIx0 * eIx2 + eIy0 * eIy2) * iI;
-    const uIx2 = (eIx2 - rI1 * uIx1 - rI2 * uIx0) * iI;
-    const uIy2 = (eIy2 - rI1 * uIy1 - rI2 * uIy0) * iI;
+    const rhoI2 = oI2 + eIx0 * eIx2 + eIy0 * eIy2;
+    const rI2 = rhoI2 * iI;
+    const uIx2 = (eIx2 - rI1 * uIx1) * iI - vIx * rhoI2;
+    const uIy2 = (eIy2 - rI1 * uIy1) * iI - vIy * rhoI2;
     const nm2 = kMu * uIy2;
     const oC2 = (0.5 * (wCx1 * wCx1 + wCy1 * wCy1 - rC1 * rC1)) * iC;
     const Sx2 = rC1 * uCx1;
@@ -466,9 +491,10 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[48] = W3;
     // Order 3.
     const oI3 = eIx1 * eIx2 + eIy1 * eIy2 - rI1 * rI2;
-    const rI3 = (oI3 + eIx0 * eIx3 + eIy0 * eIy3) * iI;
-    const uIx3 = (eIx3 - (rI1 * uIx2 + rI2 * uIx1) - rI3 * uIx0) * iI;
-    const uIy3 = (eIy3 - (rI1 * uIy2 + rI2 * uIy1) - rI3 * uIy0) * iI;
+    const rhoI3 = oI3 + eIx0 * eIx3 + eIy0 * eIy3;
+    const rI3 = rhoI3 * iI;
+    const uIx3 = (eIx3 - (rI1 * uIx2 + rI2 * uIx1)) * iI - vIx * rhoI3;
+    const uIy3 = (eIy3 - (rI1 * uIy2 + rI2 * uIy1)) * iI - vIy * rhoI3;
     const nm3 = kMu * uIy3;
     const oC3 = (wCx1 * wCx2 + wCy1 * wCy2 - rC1 * rC2) * iC;
     const Sx3 = (rC1 * uCx2 + rC2 * uCx1);
@@ -501,9 +527,10 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[49] = W4;
     // Order 4.
     const oI4 = (eIx1 * eIx3 + eIy1 * eIy3 - rI1 * rI3 + 0.5 * (eIx2 * eIx2 + eIy2 * eIy2 - rI2 * rI2));
-    const rI4 = (oI4 + eIx0 * eIx4 + eIy0 * eIy4) * iI;
-    const uIx4 = (eIx4 - ((rI1 * uIx3 + rI2 * uIx2) + rI3 * uIx1) - rI4 * uIx0) * iI;
-    const uIy4 = (eIy4 - ((rI1 * uIy3 + rI2 * uIy2) + rI3 * uIy1) - rI4 * uIy0) * iI;
+    const rhoI4 = oI4 + eIx0 * eIx4 + eIy0 * eIy4;
+    const rI4 = rhoI4 * iI;
+    const uIx4 = (eIx4 - ((rI1 * uIx3 + rI2 * uIx2) + rI3 * uIx1)) * iI - vIx * rhoI4;
+    const uIy4 = (eIy4 - ((rI1 * uIy3 + rI2 * uIy2) + rI3 * uIy1)) * iI - vIy * rhoI4;
     const nm4 = kMu * uIy4;
     const oC4 = ((wCx1 * wCx3 + wCy1 * wCy3 - rC1 * rC3 + 0.5 * (wCx2 * wCx2 + wCy2 * wCy2 - rC2 * rC2))) * iC;
     const Sx4 = ((rC1 * uCx3 + rC2 * uCx2) + rC3 * uCx1);
@@ -536,9 +563,10 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[50] = W5;
     // Order 5.
     const oI5 = (eIx1 * eIx4 + eIy1 * eIy4 - rI1 * rI4 + eIx2 * eIx3 + eIy2 * eIy3 - rI2 * rI3);
-    const rI5 = (oI5 + eIx0 * eIx5 + eIy0 * eIy5) * iI;
-    const uIx5 = (eIx5 - ((rI1 * uIx4 + rI2 * uIx3) + (rI3 * uIx2 + rI4 * uIx1)) - rI5 * uIx0) * iI;
-    const uIy5 = (eIy5 - ((rI1 * uIy4 + rI2 * uIy3) + (rI3 * uIy2 + rI4 * uIy1)) - rI5 * uIy0) * iI;
+    const rhoI5 = oI5 + eIx0 * eIx5 + eIy0 * eIy5;
+    const rI5 = rhoI5 * iI;
+    const uIx5 = (eIx5 - ((rI1 * uIx4 + rI2 * uIx3) + (rI3 * uIx2 + rI4 * uIx1))) * iI - vIx * rhoI5;
+    const uIy5 = (eIy5 - ((rI1 * uIy4 + rI2 * uIy3) + (rI3 * uIy2 + rI4 * uIy1))) * iI - vIy * rhoI5;
     const nm5 = kMu * uIy5;
     const oC5 = ((wCx1 * wCx4 + wCy1 * wCy4 - rC1 * rC4 + wCx2 * wCx3 + wCy2 * wCy3 - rC2 * rC3)) * iC;
     const Sx5 = ((rC1 * uCx4 + rC2 * uCx3) + (rC3 * uCx2 + rC4 * uCx1));
@@ -571,9 +599,10 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[51] = W6;
     // Order 6.
     const oI6 = ((eIx1 * eIx5 + eIy1 * eIy5 - rI1 * rI5 + eIx2 * eIx4 + eIy2 * eIy4 - rI2 * rI4) + 0.5 * (eIx3 * eIx3 + eIy3 * eIy3 - rI3 * rI3));
-    const rI6 = (oI6 + eIx0 * eIx6 + eIy0 * eIy6) * iI;
-    const uIx6 = (eIx6 - (((rI1 * uIx5 + rI2 * uIx4) + (rI3 * uIx3 + rI4 * uIx2)) + rI5 * uIx1) - rI6 * uIx0) * iI;
-    const uIy6 = (eIy6 - (((rI1 * uIy5 + rI2 * uIy4) + (rI3 * uIy3 + rI4 * uIy2)) + rI5 * uIy1) - rI6 * uIy0) * iI;
+    const rhoI6 = oI6 + eIx0 * eIx6 + eIy0 * eIy6;
+    const rI6 = rhoI6 * iI;
+    const uIx6 = (eIx6 - (((rI1 * uIx5 + rI2 * uIx4) + (rI3 * uIx3 + rI4 * uIx2)) + rI5 * uIx1)) * iI - vIx * rhoI6;
+    const uIy6 = (eIy6 - (((rI1 * uIy5 + rI2 * uIy4) + (rI3 * uIy3 + rI4 * uIy2)) + rI5 * uIy1)) * iI - vIy * rhoI6;
     const nm6 = kMu * uIy6;
     const oC6 = (((wCx1 * wCx5 + wCy1 * wCy5 - rC1 * rC5 + wCx2 * wCx4 + wCy2 * wCy4 - rC2 * rC4) + 0.5 * (wCx3 * wCx3 + wCy3 * wCy3 - rC3 * rC3))) * iC;
     const Sx6 = (((rC1 * uCx5 + rC2 * uCx4) + (rC3 * uCx3 + rC4 * uCx2)) + rC5 * uCx1);
@@ -618,9 +647,10 @@ export function cushionSeriesKernel(): CushionSeriesKernel {
     q[59] = Math.sqrt(Math.sqrt(Math.sqrt(n7)));
     // Order 7.
     const oI7 = ((eIx1 * eIx6 + eIy1 * eIy6 - rI1 * rI6 + eIx2 * eIx5 + eIy2 * eIy5 - rI2 * rI5) + eIx3 * eIx4 + eIy3 * eIy4 - rI3 * rI4);
-    const rI7 = (oI7 + eIx0 * eIx7 + eIy0 * eIy7) * iI;
-    const uIx7 = (eIx7 - (((rI1 * uIx6 + rI2 * uIx5) + (rI3 * uIx4 + rI4 * uIx3)) + (rI5 * uIx2 + rI6 * uIx1)) - rI7 * uIx0) * iI;
-    const uIy7 = (eIy7 - (((rI1 * uIy6 + rI2 * uIy5) + (rI3 * uIy4 + rI4 * uIy3)) + (rI5 * uIy2 + rI6 * uIy1)) - rI7 * uIy0) * iI;
+    const rhoI7 = oI7 + eIx0 * eIx7 + eIy0 * eIy7;
+    const rI7 = rhoI7 * iI;
+    const uIx7 = (eIx7 - (((rI1 * uIx6 + rI2 * uIx5) + (rI3 * uIx4 + rI4 * uIx3)) + (rI5 * uIx2 + rI6 * uIx1))) * iI - vIx * rhoI7;
+    const uIy7 = (eIy7 - (((rI1 * uIy6 + rI2 * uIy5) + (rI3 * uIy4 + rI4 * uIy3)) + (rI5 * uIy2 + rI6 * uIy1))) * iI - vIy * rhoI7;
     const nm7 = kMu * uIy7;
     const oC7 = (((wCx1 * wCx6 + wCy1 * wCy6 - rC1 * rC6 + wCx2 * wCx5 + wCy2 * wCy5 - rC2 * rC5) + wCx3 * wCx4 + wCy3 * wCy4 - rC3 * rC4)) * iC;
     const Sx7 = (((rC1 * uCx6 + rC2 * uCx5) + (rC3 * uCx4 + rC4 * uCx3)) + (rC5 * uCx2 + rC6 * uCx1));
