@@ -133,8 +133,7 @@ function expressKernel(): ExpressKernel {
   // The impact's sinθ, cosθ, μs, μw, the slips' threshold, the step's choice's weights iv,
   // iw, L^6 and L^7 (for constants and stateOf), and twice its energy per unit mass (finish).
   const GEOM = new Float64Array(new ArrayBuffer(10 * 8));
-  // The variables at the start of the step being taken, and the state the solver continues from
-  // (EXPRESS_FROM).
+  // The variables at the start of the step being taken (for handOver).
   const PREV = new Float64Array(new ArrayBuffer(6 * 8));
   // The work's target and the impulse at the start of the step being taken (for handOver).
   const STEP = new Float64Array(new ArrayBuffer(2 * 8));
@@ -142,6 +141,7 @@ function expressKernel(): ExpressKernel {
   const LAST = new Float64Array(new ArrayBuffer(4 * 8)).fill(NaN);
   // sinθ, cosθ, μs and μw of the series' constants K[0..11] and K[17] (NaN at first: no match).
   const KEY = new Float64Array(new ArrayBuffer(4 * 8)).fill(NaN);
+  // The state the solver continues from (EXPRESS_FROM), formed by handOver from PREV.
   const FROM = new Float64Array(new ArrayBuffer(6 * 8));
   // The tuning constants as constants of the closure, which the compiler embeds: a module-level
   // binding is a context slot (the bundler makes a module's `const` a `var`) that the optimized
@@ -156,8 +156,9 @@ function expressKernel(): ExpressKernel {
   const rootMove = ROOT_MOVE;
   const eventDone = EVENT_DONE;
   /**
-   * The end of compression in a step of length dp whose series q takes vy from above 0 to 0 or
-   * below: the impulse of vy = 0, with the work there in EXPRESS_EVENT[2]. From the root of vy's
+   * The end of compression in a step of length dp (ARG = [dp, cosθ, done]) whose series q takes vy
+   * from above 0 to 0 or below: the impulse of vy = 0 into ARG[4], with the work there in
+   * EXPRESS_EVENT[2]. From the root of vy's
    * quadratic part, Newton's method kept inside the bracket (bisection otherwise) until its
    * correction dx is below done × dp; the work at the root is then W(x) - c vy(x) dx / 2
    * (dW/dp = c vy: the second-order Taylor step to the root, its error of order dx³), from the
@@ -203,8 +204,9 @@ function expressKernel(): ExpressKernel {
   }
 
   /**
-   * The end of restitution in [lo, hi] of a step of length hi (the work above target at lo, at or
-   * below it at hi): where W falls to target, by Halley's method (W' = c vy and W'' = c dvy/dp
+   * The end of restitution in [lo, hi] of a step of length hi (ARG = [target, lo, hi, cosθ]; the
+   * work above target at lo, at or below it at hi), into ARG[4]: where W falls to target, by
+   * Halley's method (W' = c vy and W'' = c dvy/dp
    * from the same pass; Newton's correction where Halley's would not be defined) kept inside the
    * bracket by bisection, from the root of the work's quadratic part (workStart) or the bracket's
    * middle, until its correction is below EVENT_DONE of the step.
