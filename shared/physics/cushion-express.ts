@@ -206,10 +206,10 @@ function expressKernel(): ExpressKernel {
   /**
    * The end of restitution in [lo, hi] of a step of length hi (ARG = [target, lo, hi, cosθ]; the
    * work above target at lo, at or below it at hi), into ARG[4]: where W falls to target, by
-   * Halley's method (W' = c vy and W'' = c dvy/dp
-   * from the same pass; Newton's correction where Halley's would not be defined) kept inside the
-   * bracket by bisection, from the root of the work's quadratic part (workStart) or the bracket's
-   * middle, until its correction is below EVENT_DONE of the step.
+   * Halley's method (W' = c vy and W'' = c dvy/dp from the same pass; Newton's correction where
+   * Halley's would not be defined) kept inside the bracket by bisection, from the root of the
+   * work's quadratic part (workStart) or the bracket's middle, until its correction is below
+   * EVENT_DONE of the step.
    */
   function restitutionEnd(): void {
     const target = ARG[0]!;
@@ -249,7 +249,7 @@ function expressKernel(): ExpressKernel {
   }
 
   /** Whether both slips at the step's end are at least √min2. */
-  function slipsAbove(s: number, c: number, min2: number): boolean {
+  function slipsAbove(s: number, min2: number): boolean {
     const z = start;
     const ix = z[0]!;
     const iy = z[2]!;
@@ -471,7 +471,7 @@ function expressKernel(): ExpressKernel {
       // is below the threshold reaches the step's end before it (to first order in the step), so a
       // dip inside the step shows at its end. (A check in the middle as well never fired over
       // 217,836 impacts, random and structured, and cost 9% of the time.)
-      if (!slipsAbove(s, c, min2)) return handOver(rest0, done);
+      if (!slipsAbove(s, min2)) return handOver(rest0, done);
       rolling = false;
       p += dp;
     }
@@ -486,7 +486,10 @@ function expressKernel(): ExpressKernel {
    * STEP, and the state from PREV in EXPRESS_FROM) and returns code.
    */
   function handOver(restitution: boolean, code: number): number {
-    stateOf(PREV, FROM);
+    // (Through out, which the solver's result does not use.)
+    out.set(PREV);
+    stateOf();
+    FROM.set(out);
     const h = HANDOVER;
     h.restitution = restitution;
     h.wEnd = STEP[0]!;
@@ -572,20 +575,17 @@ function expressKernel(): ExpressKernel {
    * The internal state y = [vx, vy, R ωx, R ωy, R ωz, W] of the series' variables z (e_I,x, vy,
    * e_I,y, e_C,x, R ωz, W; SERIES_VARIABLES), for sinθ and cosθ in GEOM: R ωx = e_I,y + sinθ vy,
    * and from e_I,x = vx + sinθ R ωy - cosθ R ωz and e_C,x = vx - R ωy,
-   * R ωy = (e_I,x + cosθ R ωz - e_C,x) / (1 + sinθ).
+   * R ωy = (e_I,x + cosθ R ωz - e_C,x) / (1 + sinθ). In place on out, a constant of the closure
+   * (an array passed in would be checked at each access).
    */
-  function stateOf(z: Float64Array, y: Float64Array): void {
+  function stateOf(): void {
+    const o = out;
     const s = GEOM[0]!;
     const c = GEOM[1]!;
-    const vy = z[1]!;
-    const oz = z[4]!;
-    const oy = (z[0]! + c * oz - z[3]!) / (1 + s);
-    y[0] = z[3]! + oy;
-    y[1] = vy;
-    y[2] = z[2]! + s * vy;
-    y[3] = oy;
-    y[4] = oz;
-    y[5] = z[5]!;
+    const oy = (o[0]! + c * o[4]! - o[3]!) / (1 + s);
+    o[0] = o[3]! + oy;
+    o[2] = o[2]! + s * o[1]!;
+    o[3] = oy;
   }
 
   /**
@@ -600,15 +600,7 @@ function expressKernel(): ExpressKernel {
     const o = out;
     q[56] = ARG[0]!; // q[SERIES_AT]
     valueAt();
-    // (stateOf written out on out, a constant of the closure: the compiler then embeds it.)
-    const sn = GEOM[0]!;
-    const cs = GEOM[1]!;
-    const vy = o[1]!;
-    const oz = o[4]!;
-    const oy = (o[0]! + cs * oz - o[3]!) / (1 + sn);
-    o[0] = o[3]! + oy;
-    o[2] = o[2]! + sn * vy;
-    o[3] = oy;
+    stateOf();
     return o[0]! * o[0]! + o[1]! * o[1]! + 0.4 * (o[2]! * o[2]! + o[3]! * o[3]! + o[4]! * o[4]!) <= GEOM[9]!;
   }
 
