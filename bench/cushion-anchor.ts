@@ -1,5 +1,5 @@
 // The yardstick: the anchors' scheme for the Mathavan 2010 cushion impact, as engines use it
-// today (see ../shared/physics.md, "What the anchors achieve"): explicit Euler in the impulse
+// today: explicit Euler in the impulse
 // with 100 steps of ΔP = max(M vy0 / 100, 0.001 N s), slip directions through atan2 and their
 // cosines and sines through Math.cos / Math.sin, the work by the trapezoid rule; compression
 // until vy <= 0, restitution until the work done since reaches e_e² W_c. Written for this

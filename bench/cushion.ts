@@ -80,7 +80,7 @@ function table(title: string, cases: readonly GridCase[], bySpeed = false): void
  * the speeds), the anchors' does (their step is floored at 0.001 N s, so an impact at 0.05 m/s
  * takes a handful of steps, and a badly wrong one). The row before the whole grid's leaves out
  * the slowest speed: without it the anchors' largest and median errors are those that
- * ../shared/physics.md gives for its grid of 528 impacts (about 2e-2 and 3e-3), which 0.05 m/s
+ * are reported for the anchors on a grid of 528 impacts (about 2e-2 and 3e-3), which 0.05 m/s
  * takes to 2.4e-1.
  */
 function speeds(cases: readonly GridCase[], kernel: readonly number[], anchors: readonly number[], anchorErr: readonly number[]): void {

@@ -1,6 +1,6 @@
 // The equations of motion of a ball against a cushion, integrated in the impulse
 // (Mathavan, Jackson and Parkin 2010, "A theoretical analysis of billiard ball dynamics under
-// cushion impacts", Proc. IMechE C 224(9), eqs. 9-15; see ../shared/physics.md).
+// cushion impacts", Proc. IMechE C 224(9), eqs. 9-15; doi 10.1243/09544062JMES1964).
 //
 // Internal variables, chosen so that every quantity is a speed:
 //   y = [vx, vy, Ox, Oy, Oz, W] with O = R ω (m/s) and W the work of the normal force at the

@@ -28,20 +28,26 @@ function reduce(x: number): { r: number; q: number } {
   return { r, q };
 }
 
-/** Both sin and cos of x; x must be finite and is best kept within a few turns. */
+/**
+ * Both sin and cos of x; x must be finite and is best kept within a few turns. Exactly odd and even:
+ * sin(-x) is -sin(x) and cos(-x) is cos(x) to the bit, since |x| is reduced and the sign applied
+ * after (reducing -x itself would round its halves, such as -3π/4 = -1.5 quadrants, the other way),
+ * which makes a shot and its mirror image y -> -y bit-exact mirrors.
+ */
 export function sinCos(x: number): { sin: number; cos: number } {
-  const { r, q } = reduce(x);
+  const { r, q } = reduce(Math.abs(x));
   const s = sinKernel(r);
   const c = cosKernel(r);
+  const sign = x < 0 ? -1 : 1;
   switch (q) {
     case 0:
-      return { sin: s, cos: c };
+      return { sin: sign * s, cos: c };
     case 1:
-      return { sin: c, cos: -s };
+      return { sin: sign * c, cos: -s };
     case 2:
-      return { sin: -s, cos: -c };
+      return { sin: -sign * s, cos: -c };
     default:
-      return { sin: -c, cos: s };
+      return { sin: -sign * c, cos: s };
   }
 }
 

@@ -1,8 +1,10 @@
 // The cue strike: a level cue hitting the ball with tip offsets gives it speed V along the heading
-// and spin ω = (5V / 2R) × offset (../shared/physics.md, "The cue strike"): the vertical offset b
-// spins it about the horizontal axis across the heading (b = 0.4 is natural roll, since then
-// ωR = V), the horizontal offset a about the vertical (right english, a > 0, spins clockwise seen
-// from above: ω_z < 0). Offsets beyond half the radius miscue.
+// and spin ω = (5V / 2R) × offset (the angular impulse r × J over I = 2MR²/5 with J = MV; Alciatore,
+// "The Illustrated Principles of Pool and Billiards", 2004): the vertical offset b spins it about
+// the horizontal axis across the heading (b = 0.4 is natural roll, since then ωR = V),
+// the horizontal offset a about the vertical. Right english (a > 0): the tip pushes the ball's
+// right side forward, so it spins counter-clockwise seen from above, ω_z > 0 with z up.
+// Offsets beyond half the radius miscue.
 import type { BallSample } from './ball-state.ts';
 import { sinCos } from './det-math.ts';
 
@@ -25,6 +27,7 @@ export function strikeBall(heading: number, speed: number, side: number, top: nu
   // Rolling forward along d = (cos, sin) has ω = (-d_y, d_x) V / R.
   out.wx = -k * top * sin;
   out.wy = k * top * cos;
-  out.wz = -k * side;
+  // r × J with r = a R (sin, -cos) (right of the heading) and J along (cos, sin): +a R J about z.
+  out.wz = k * side;
   return out;
 }

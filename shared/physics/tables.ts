@@ -1,6 +1,6 @@
 // Table and ball specifications, with the physical constants in use. Lengths in metres, masses in
 // kilograms. The playing area is measured between the cushion noses; the origin is its centre,
-// x along the long side (../shared/physics.md, "Units and frames").
+// x along the long side, y across, z up (right-handed); headings from +x, counter-clockwise.
 import type { CushionParams } from './cushion-types.ts';
 import { buildOutline, type Cushion, type Pocket, type PocketShape } from './table-geometry.ts';
 
@@ -56,7 +56,8 @@ const G = 9.81;
 
 // Alciatore's fit to measured ball-ball friction (technical proof A-14): μ(v) = 9.951e-3 + 0.108 e^(-1.088 v).
 const PHENOLIC: BallBallSpec = { restitution: 0.95, frictionA: 9.951e-3, frictionB: 0.108, frictionC: 1.088 };
-// Typical cloth (../shared/physics.md): μ_slide 0.2, μ_roll 0.01, spin deceleration 10 rad/s^2.
+// Typical cloth (Alciatore, "Pool and billiards physics resources", physical properties: μ_slide
+// 0.15-0.4, μ_roll 0.005-0.015, spin deceleration 5-15 rad/s^2): μ_slide 0.2, μ_roll 0.01, 10 rad/s^2.
 const CLOTH: ClothSpec = { muSlide: 0.2, muRoll: 0.01, spinDecel: 10 };
 
 // cos and sin of the jaw angles, written out because shared/ uses no Math.cos.

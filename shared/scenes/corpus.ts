@@ -1,11 +1,11 @@
 // The golden corpus: scenes and shots defined once, used by the determinism tests (whose hashes
 // are committed), the benchmarks and the client's debug views. Breaks on each table, banks, spin
-// shots, pockets and jaws, and the hard cases of ../shared/physics.md.
+// shots, side spin, pockets and jaws, and the hard cases every engine must survive (docs/simulation.md).
 import { tableSpec, type Scene, type SceneBall, type Shot, type TableName } from '../physics/index.ts';
 import { newGame } from '../rules/index.ts';
 import { aim, frozenLine, generator, ghost, onRail, randomBalls, shot, type Point } from './build.ts';
 
-export type CorpusTag = 'break' | 'nineball-break' | 'snooker-break' | 'carom' | 'single' | 'bank' | 'spin' | 'pocket' | 'hard' | 'random';
+export type CorpusTag = 'break' | 'nineball-break' | 'snooker-break' | 'carom' | 'single' | 'bank' | 'spin' | 'english' | 'pocket' | 'hard' | 'random';
 
 export interface CorpusCase {
   readonly name: string;
@@ -120,6 +120,15 @@ add('pure sidespin off a rail', ['spin', 'single', 'bank'], POOL, [{ id: 'cue', 
 add('snooker screw back', ['spin'], SNOOKER, [{ id: 'cue', x: -0.6, y: 0.2 }, { id: 'black', x: 0.2, y: 0.2 }], shot('cue', 0, 4, 0, -0.45));
 add('spin in place (very slow with side)', ['spin', 'single', 'hard'], POOL, [{ id: 'cue', x: 0, y: 0 }], shot('cue', 1, 0.01, 0.4, 0));
 
+// Side spin (english), each with its mirror image: right english (side > 0) off a rail hit square
+// comes back to the shooter's right, throws a full-hit object ball to the left, and is running
+// english on a ball angling to the right into a rail (a wider, faster rebound).
+for (const [name, side] of [['right', 0.4], ['no', 0], ['left', -0.4]] as const) {
+  add(`${name} english straight into a rail`, ['english', 'spin', 'single', 'bank'], POOL, [{ id: 'cue', x: 0.6, y: 0 }], shot('cue', 0, 1.5, side, 0));
+  add(`${name} english full hit on an object ball`, ['english', 'spin'], POOL, [{ id: 'cue', x: -0.5, y: 0 }, { id: '1', x: 0.1, y: 0 }], shot('cue', 0, 1, side, 0));
+  add(`${name} english angling right into a rail`, ['english', 'spin', 'single', 'bank'], POOL, [{ id: 'cue', x: -0.9, y: 0 }], shot('cue', Math.PI / 4, 1.5, side, 0));
+}
+
 // Pockets and jaws.
 add('pot into the top-right corner', ['pocket', 'single'], POOL, [{ id: 'cue', x: 0.6, y: -0.3 }], shot('cue', aim({ x: 0.6, y: -0.3 }, { x: 1.3, y: -0.665 }), 2));
 add('pot into a middle pocket', ['pocket', 'single'], POOL, [{ id: 'cue', x: 0, y: 0 }], shot('cue', Math.PI / 2, 1.5));
@@ -135,7 +144,7 @@ add('scratch: cue ball into a corner after the object ball', ['pocket'], POOL, [
 add('snooker corner jaw rattle', ['pocket', 'single', 'hard'], SNOOKER, [{ id: 'cue', x: 1.2, y: 0.3 }], shot('cue', aim({ x: 1.2, y: 0.3 }, { x: 1.76, y: 0.83 }), 3));
 add('snooker middle pocket', ['pocket', 'single'], SNOOKER, [{ id: 'cue', x: 0.02, y: -0.3 }], shot('cue', -Math.PI / 2, 2));
 
-// Hard cases (../shared/physics.md).
+// Hard cases (docs/simulation.md, "Hard cases and how they are met").
 add('line of three frozen balls struck straight', ['hard'], POOL, [{ id: 'cue', x: -0.6, y: 0 }, ...frozenLine(['1', '2', '3'], { x: 0, y: 0 }, 1, 0, R_POOL)], shot('cue', 0, 3));
 add('line of five frozen balls struck straight', ['hard'], POOL, [{ id: 'cue', x: -0.6, y: 0.1 }, ...frozenLine(['1', '2', '3', '4', '5'], { x: 0, y: 0.1 }, 1, 0, R_POOL)], shot('cue', 0, 5, 0, 0.3));
 add('cue ball frozen to the object ball', ['hard'], POOL, [{ id: 'cue', x: 0, y: 0 }, { id: '1', x: 2 * R_POOL, y: 0 }], shot('cue', 0.3, 1.5));

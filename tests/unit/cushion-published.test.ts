@@ -1,5 +1,5 @@
-// The published model outputs of Mathavan, Jackson and Parkin (2010) listed in
-// ../shared/physics.md (paper constants), reproduced within their stated accuracy: the values
+// The published model outputs of Mathavan, Jackson and Parkin (2010), their Figs. 9 and 12
+// (paper constants), reproduced within their stated accuracy: the values
 // carry their source's discretisation error, about 0.05° (speeds to about 1e-3 m/s).
 import { describe, expect, it } from 'vitest';
 import { cushionRebound } from '../../shared/physics/index.ts';

@@ -24,9 +24,10 @@ describe('the cue strike', () => {
     expect(b.vy).toBeCloseTo(2 * Math.sin(0.7), 12);
   });
 
-  it('spins clockwise seen from above with right english, and slides with a centre hit', () => {
+  it('spins counter-clockwise seen from above with right english, and slides with a centre hit', () => {
     const b = struck(0, 2, 0.3, 0);
-    expect(b.wz).toBeCloseTo((-5 * 2 * 0.3) / (2 * P.R), 10);
+    expect(b.wz).toBeCloseTo((5 * 2 * 0.3) / (2 * P.R), 10);
+    expect(struck(0, 2, -0.3, 0).wz).toBeCloseTo((-5 * 2 * 0.3) / (2 * P.R), 10);
     expect(b.motion).toBe('sliding');
   });
 

@@ -27,6 +27,17 @@ describe('deterministic elementary functions', () => {
     );
   });
 
+  it('are exactly odd and even: sin(-x) = -sin(x) and cos(-x) = cos(x) to the bit, at multiples of π/4 too', () => {
+    const check = (x: number) => {
+      const p = sinCos(x);
+      const m = sinCos(-x);
+      expect(m.sin === -p.sin, `sin(${x})`).toBe(true); // === is bitwise but for the sign of zero
+      expect(m.cos === p.cos, `cos(${x})`).toBe(true);
+    };
+    for (let k = -16; k <= 16; k++) check((k * Math.PI) / 4);
+    fc.assert(fc.property(fc.double({ min: -50, max: 50, noNaN: true }), check), { numRuns: 5000 });
+  });
+
   it('hit exact values where they must', () => {
     expect(sinCos(0)).toEqual({ sin: 0, cos: 1 });
     expect(detExp(0)).toBe(1);

@@ -1,4 +1,4 @@
-// The hard cases of ../shared/physics.md, each through the public simulate() on the corpus scene
+// The hard cases of docs/simulation.md, each through the public simulate() on the corpus scene
 // that defines it.
 import { describe, expect, it } from 'vitest';
 import { sampleOutcome, simulate, tableSpec, type Outcome } from '../../../shared/physics/index.ts';
