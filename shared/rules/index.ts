@@ -63,6 +63,8 @@ export { groupOf } from './eightball.ts';
 export { countCarom } from './threecushion.ts';
 export { readOutcome } from './outcome.ts';
 export { ballSet } from './practice.ts';
+export { playShot, shotClockExpired } from './play.ts';
+export type { PlayedShot } from './play.ts';
 export { SNOOKER_COLOURS, SNOOKER_REDS, SNOOKER_VALUES, POOL_OBJECT_BALLS, CAROM_BALLS } from './racks.ts';
 
 export const GAME_KINDS: readonly GameKind[] = ['nineball', 'eightball', 'snooker', 'threecushion', 'practice'];
