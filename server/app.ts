@@ -8,6 +8,10 @@ import { createRequestHandler } from './http-routes.ts';
 import { schemaVersion } from './migrate.ts';
 import { loadStaticFiles } from './static-files.ts';
 import { VERSION } from './version.ts';
+import { MAX_FRAME_BYTES } from '../shared/protocol/index.ts';
+import { GameService } from './game/service.ts';
+import { Store } from './store.ts';
+import { bindWebSocket } from './ws/binding.ts';
 
 export interface RunningServer {
   /** http://host:port with the port actually bound (PORT=0 picks a free one). */
@@ -27,10 +31,17 @@ export class PortInUseError extends Error {
 }
 
 /** Largest WebSocket message accepted, in bytes: anything larger closes the connection (1009). */
-export const MAX_MESSAGE_BYTES = 64 * 1024;
+export const MAX_MESSAGE_BYTES = MAX_FRAME_BYTES;
 
 export async function startServer(config: Config): Promise<RunningServer> {
   const { db, applied } = openDatabase(config.dbPath, config.migrationsDir);
+  let service: GameService;
+  try {
+    service = new GameService(new Store(db), { seatHoldMs: config.seatHoldMs });
+  } catch (err) {
+    db.close();
+    throw err;
+  }
   const files = loadStaticFiles(config.clientDir);
   const http = createServer(createRequestHandler(files, () => ({ ok: db.open, version: VERSION, schema: schemaVersion(db) })));
   try {
@@ -50,10 +61,8 @@ export async function startServer(config: Config): Promise<RunningServer> {
   }
 
   // Attached only once listening: a WebSocketServer re-emits its HTTP server's errors.
-  const wss = new WebSocketServer({ server: http, path: '/ws', maxPayload: MAX_MESSAGE_BYTES });
-  wss.on('connection', (socket) => {
-    socket.send(JSON.stringify({ type: 'hello', version: VERSION }));
-  });
+  const wss = new WebSocketServer({ server: http, path: '/ws', maxPayload: MAX_MESSAGE_BYTES, perMessageDeflate: false });
+  const binding = bindWebSocket(wss, service, { pingMs: config.pingMs, tickMs: 250 });
 
   const { port } = http.address() as AddressInfo;
   const hostInUrl = config.host.includes(':') ? `[${config.host}]` : config.host;
@@ -65,6 +74,7 @@ export async function startServer(config: Config): Promise<RunningServer> {
     migrationsApplied: applied,
     close() {
       closing ??= new Promise<void>((resolve) => {
+        binding.stop();
         for (const socket of wss.clients) socket.close(1001, 'server shutting down');
         wss.close();
         http.close(() => {

@@ -10,6 +10,20 @@ export interface Config {
   readonly dbPath: string;
   readonly migrationsDir: string;
   readonly clientDir: string;
+  /** How long a dropped player's seat is held (ms). */
+  readonly seatHoldMs: number;
+  /** Interval between pings of each socket (ms). */
+  readonly pingMs: number;
+}
+
+function seconds(env: NodeJS.ProcessEnv, name: string, fallback: number): number {
+  const text = env[name];
+  if (text === undefined) return fallback * 1000;
+  const value = Number(text);
+  if (text.trim() === '' || !Number.isFinite(value) || value <= 0 || value > 86_400) {
+    throw new RangeError(`${name} must be a number of seconds above 0 and at most 86400, got "${text}"`);
+  }
+  return value * 1000;
 }
 
 export function readConfig(env: NodeJS.ProcessEnv = process.env): Config {
@@ -26,5 +40,7 @@ export function readConfig(env: NodeJS.ProcessEnv = process.env): Config {
     dbPath: resolve(env.BAIZE_DB ?? resolve(ROOT, 'data/baize.db')),
     migrationsDir: resolve(env.BAIZE_MIGRATIONS ?? resolve(ROOT, 'migrations')),
     clientDir: resolve(env.BAIZE_CLIENT_DIR ?? resolve(ROOT, 'dist/client')),
+    seatHoldMs: seconds(env, 'BAIZE_SEAT_HOLD_S', 60),
+    pingMs: seconds(env, 'BAIZE_PING_S', 15),
   };
 }

@@ -99,11 +99,12 @@ describe('the server', () => {
     it(`stops cleanly on ${signal}: open connections closed, database closed, exit code 0`, async () => {
       const { server, dbPath } = await start();
       const socket = new WebSocket(`${server.url.replace('http', 'ws')}/ws`);
-      const hello = await new Promise<string>((res, rej) => {
+      const welcome = await new Promise<string>((res, rej) => {
+        socket.once('open', () => socket.send(JSON.stringify({ type: 'hello', name: 'Stopper' })));
         socket.once('message', (data) => res(String(data)));
         socket.once('error', rej);
       });
-      expect(JSON.parse(hello)).toEqual({ type: 'hello', version: VERSION });
+      expect(JSON.parse(welcome)).toMatchObject({ type: 'welcome', player: { name: 'Stopper' } });
       const closed = new Promise<number>((res) => socket.once('close', (code) => res(code)));
       expect(existsSync(`${dbPath}-wal`)).toBe(true);
 

@@ -1,0 +1,75 @@
+// The lobby and presence: which rooms exist, who is connected on which sockets, who watches the
+// lobby. Everything a second server process would have to share lives behind this one module.
+import type { LobbyRoom, PlayerRef } from '../../shared/protocol/index.ts';
+import type { Room } from './room.ts';
+
+export type ConnId = number;
+
+export class Lobby {
+  readonly rooms = new Map<string, Room>();
+  /** The player of each welcomed socket. */
+  private readonly players = new Map<ConnId, PlayerRef>();
+  /** Each connected player's sockets. */
+  private readonly sockets = new Map<string, Set<ConnId>>();
+  /** When each player's last socket dropped (ms since the epoch); absent while connected. */
+  private readonly droppedAt = new Map<string, number>();
+  /** Sockets that asked for the lobby list. */
+  readonly subscribers = new Set<ConnId>();
+
+  constructor(private readonly startedAt: number) {}
+
+  playerOf(conn: ConnId): PlayerRef | undefined {
+    return this.players.get(conn);
+  }
+
+  /** Binds a socket to a player; true when the player was not connected before. */
+  attach(conn: ConnId, player: PlayerRef): boolean {
+    this.players.set(conn, player);
+    let set = this.sockets.get(player.id);
+    const first = set === undefined;
+    if (!set) this.sockets.set(player.id, (set = new Set()));
+    set.add(conn);
+    this.droppedAt.delete(player.id);
+    return first;
+  }
+
+  /** Forgets a socket; returns its player when that was the player's last socket. */
+  detach(conn: ConnId, now: number): PlayerRef | undefined {
+    this.subscribers.delete(conn);
+    const player = this.players.get(conn);
+    if (!player) return undefined;
+    this.players.delete(conn);
+    const set = this.sockets.get(player.id);
+    set?.delete(conn);
+    if (set && set.size > 0) return undefined;
+    this.sockets.delete(player.id);
+    this.droppedAt.set(player.id, now);
+    return player;
+  }
+
+  connected(playerId: string): boolean {
+    return this.sockets.has(playerId);
+  }
+
+  socketsOf(playerId: string): readonly ConnId[] {
+    const set = this.sockets.get(playerId);
+    return set ? [...set] : [];
+  }
+
+  /** When a disconnected player dropped: a player never seen since the start dropped at the start. */
+  droppedSince(playerId: string): number | undefined {
+    if (this.sockets.has(playerId)) return undefined;
+    return this.droppedAt.get(playerId) ?? this.startedAt;
+  }
+
+  /** The public rooms not yet over, oldest first. */
+  listing(): LobbyRoom[] {
+    const out: LobbyRoom[] = [];
+    for (const room of this.rooms.values()) {
+      const s = room.state;
+      if (s.private || (s.status !== 'waiting' && s.status !== 'playing')) continue;
+      out.push({ id: s.id, kind: s.kind, raceTo: s.raceTo, players: s.seats.map((p) => ({ id: p.id, name: p.name })), spectators: room.spectators.size, status: s.status });
+    }
+    return out;
+  }
+}

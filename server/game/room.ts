@@ -1,0 +1,98 @@
+// A room: its plain state (persisted as JSON after every change) and the pure steps of its match:
+// starting a game, moving on after a move (snooker frames, the end of the match), the view sent out.
+import type { GameKindName, PlayerRef, RoomView } from '../../shared/protocol/index.ts';
+import { newGame, type Game } from '../../shared/rules/index.ts';
+import type { ConnId } from './lobby.ts';
+
+export type RoomStatus = 'waiting' | 'playing' | 'over' | 'closed';
+
+/** Everything about a room that survives a restart. */
+export interface RoomState {
+  readonly id: string;
+  readonly kind: GameKindName;
+  readonly raceTo: number;
+  readonly private: boolean;
+  readonly shotClock: number;
+  readonly createdBy: string;
+  readonly seats: readonly PlayerRef[];
+  readonly status: RoomStatus;
+  readonly stateId: number;
+  readonly game: Game | null;
+  readonly matchId: number | null;
+  /** The match's players, the first breaking its first game (and snooker's even frames). */
+  readonly order: readonly string[];
+  /** The match's seed; snooker frame n plays seed + n. */
+  readonly seed: number;
+  readonly frame: number;
+  /** Snooker frames won in the match. */
+  readonly frames: Readonly<Record<string, number>> | null;
+  readonly deadline: number | null;
+  readonly rematch: readonly string[];
+  readonly winner: string | null;
+  /** How the match ended: 'played', 'concession', 'claim'. */
+  readonly how: string | null;
+}
+
+export class Room {
+  /** Sockets watching as spectators. */
+  readonly spectators = new Set<ConnId>();
+  /** Players whose seat hold has run out and whose opponent has been told so. */
+  readonly holdsOver = new Set<string>();
+
+  constructor(public state: RoomState) {}
+}
+
+/** The match's first game, or snooker's frame n: the break alternates from frame to frame. */
+export function gameFor(state: RoomState, frame: number): Game {
+  if (state.kind !== 'snooker') return newGame(state.kind, state.order, { seed: state.seed, raceTo: state.raceTo });
+  const players = frame % 2 === 0 ? state.order : [...state.order].reverse();
+  return newGame('snooker', players, { seed: state.seed + frame });
+}
+
+/** The shot clock's end after a change that leaves a game in play. */
+export function deadlineAfter(state: RoomState, now: number): number | null {
+  return state.status === 'playing' && state.shotClock > 0 ? now + state.shotClock * 1000 : null;
+}
+
+/**
+ * The room after a move produced `game`: a snooker frame won starts the next (the other player
+ * breaks) until the race of frames is won; any other game's end ends the match.
+ */
+export function afterMove(state: RoomState, game: Game, how: string, now: number): RoomState {
+  const stateId = state.stateId + 1;
+  if (game.winner === null) {
+    const next = { ...state, game, stateId };
+    return { ...next, deadline: deadlineAfter(next, now) };
+  }
+  if (state.kind === 'snooker' && how === 'played') {
+    const frames = { ...(state.frames ?? {}) };
+    frames[game.winner] = (frames[game.winner] ?? 0) + 1;
+    if (frames[game.winner]! < state.raceTo) {
+      const frame = state.frame + 1;
+      const next: RoomState = { ...state, frames, frame, stateId, game: gameFor(state, frame) };
+      return { ...next, deadline: deadlineAfter(next, now) };
+    }
+    return { ...state, frames, game, stateId, status: 'over', winner: game.winner, how, deadline: null, rematch: [] };
+  }
+  const frames = state.kind === 'snooker' ? { ...(state.frames ?? {}), [game.winner]: (state.frames?.[game.winner] ?? 0) + 1 } : state.frames;
+  return { ...state, frames, game, stateId, status: 'over', winner: game.winner, how, deadline: null, rematch: [] };
+}
+
+export function roomView(room: Room, seat: (p: PlayerRef) => { connected: boolean; heldUntil?: number }): RoomView {
+  const s = room.state;
+  return {
+    id: s.id,
+    kind: s.kind,
+    raceTo: s.raceTo,
+    private: s.private,
+    shotClock: s.shotClock,
+    players: s.seats.map((p) => ({ id: p.id, name: p.name, ...seat(p) })),
+    spectators: room.spectators.size,
+    status: s.status === 'closed' ? 'over' : s.status,
+    stateId: s.stateId,
+    game: s.game,
+    ...(s.deadline === null ? {} : { deadline: s.deadline }),
+    ...(s.frames === null ? {} : { frames: s.frames }),
+    ...(s.status === 'over' ? { rematch: s.rematch, winner: s.winner } : {}),
+  };
+}

@@ -1,0 +1,490 @@
+// The game service: players, rooms, seats, turns, shot clocks and held seats. It knows no sockets:
+// it takes parsed commands from numbered connections and returns what to send to whom. Every
+// change is computed on copies, written to the store, and only then made current, so a command
+// that fails (bad input, the rules, the physics, the disk) changes nothing for anyone.
+import { createHash, randomBytes } from 'node:crypto';
+import type { ClientMessage, PlayerRef, ServerMessage } from '../../shared/protocol/index.ts';
+import { MAX_OPEN_ROOMS_PER_PLAYER } from '../../shared/protocol/index.ts';
+import { concede, decide, placeCueBall, playShot, shotClockExpired, type Game } from '../../shared/rules/index.ts';
+import type { RoomChange, Store } from '../store.ts';
+import { describeError, ServiceError } from './errors.ts';
+import { Lobby, type ConnId } from './lobby.ts';
+import { afterMove, deadlineAfter, gameFor, Room, roomView, type RoomState } from './room.ts';
+
+export type { ConnId } from './lobby.ts';
+
+export interface Delivery {
+  readonly to: readonly ConnId[];
+  readonly message: ServerMessage;
+}
+
+export interface ServiceOptions {
+  /** How long a dropped player's seat is held before the opponent may claim the game (ms). */
+  readonly seatHoldMs: number;
+  readonly now?: () => number;
+  /** Where internal errors are reported. */
+  readonly log?: (line: string) => void;
+}
+
+type Msg<T extends ClientMessage['type']> = Extract<ClientMessage, { type: T }>;
+type Re = string | number | undefined;
+
+const DEFAULT_RACE = { nineball: 1, eightball: 1, snooker: 1, threecushion: 15 } as const;
+
+function hashToken(token: string): Buffer {
+  return createHash('sha256').update(token, 'utf8').digest();
+}
+
+function randomSeed(): number {
+  return randomBytes(4).readUInt32LE(0);
+}
+
+export class GameService {
+  private readonly lobby: Lobby;
+  private readonly now: () => number;
+  private readonly log: (line: string) => void;
+  /** Rooms where each player holds a seat. */
+  private readonly seatsOf = new Map<string, Set<string>>();
+  /** Rooms each socket watches. */
+  private readonly watching = new Map<ConnId, Set<string>>();
+  private out: Delivery[] = [];
+  private lobbyChanged = false;
+
+  constructor(
+    private readonly store: Store,
+    private readonly options: ServiceOptions,
+  ) {
+    this.now = options.now ?? Date.now;
+    this.log = options.log ?? ((line) => console.error(line));
+    this.lobby = new Lobby(this.now());
+    for (const row of store.openRooms()) this.addRoom(new Room(JSON.parse(row.state) as RoomState));
+  }
+
+  /** Rooms brought back from the store or made since, not closed. */
+  get roomCount(): number {
+    return this.lobby.rooms.size;
+  }
+
+  handle(conn: ConnId, msg: ClientMessage): Delivery[] {
+    try {
+      if (msg.type === 'hello') this.hello(conn, msg);
+      else this.command(conn, this.welcomed(conn), msg);
+    } catch (err) {
+      this.fail(conn, msg.id, err);
+    }
+    return this.flush();
+  }
+
+  /** An error for a frame that never became a command (bad JSON, a schema failure). */
+  reject(conn: ConnId, code: 'bad-json' | 'bad-message', message: string, re?: string | number): Delivery[] {
+    return [{ to: [conn], message: { type: 'error', ...(re === undefined ? {} : { re }), code, message } }];
+  }
+
+  /** A socket closed: it stops watching; a player's last socket starts the seat hold. */
+  close(conn: ConnId): Delivery[] {
+    for (const id of this.watching.get(conn) ?? []) {
+      const room = this.lobby.rooms.get(id);
+      if (room?.spectators.delete(conn)) {
+        this.broadcastRoom(room);
+        this.lobbyChanged = true;
+      }
+    }
+    this.watching.delete(conn);
+    const gone = this.lobby.detach(conn, this.now());
+    if (gone) for (const room of this.roomsOf(gone.id)) this.broadcastRoom(room);
+    return this.flush();
+  }
+
+  /** Timers: shot clocks that ran out, and seat holds that ended (the opponent may now claim). */
+  tick(): Delivery[] {
+    const now = this.now();
+    for (const room of [...this.lobby.rooms.values()]) {
+      const s = room.state;
+      if (s.status !== 'playing' || s.game === null) continue;
+      if (s.deadline !== null && s.deadline <= now) {
+        try {
+          this.move(room, afterMove(s, shotClockExpired(s.game), 'played', now), { type: 'clock', player: s.game.turn });
+        } catch (err) {
+          this.log(`shot clock of room ${s.id}: ${(err as Error).stack ?? String(err)}`);
+        }
+      }
+      for (const p of room.state.seats) {
+        const dropped = this.lobby.droppedSince(p.id);
+        if (dropped !== undefined && dropped + this.options.seatHoldMs <= now && !room.holdsOver.has(p.id)) {
+          room.holdsOver.add(p.id);
+          this.broadcastRoom(room);
+        }
+      }
+    }
+    return this.flush();
+  }
+
+  private welcomed(conn: ConnId): PlayerRef {
+    const player = this.lobby.playerOf(conn);
+    if (!player) throw new ServiceError('not-welcomed', 'say hello first: {"type":"hello"}');
+    return player;
+  }
+
+  private command(conn: ConnId, player: PlayerRef, msg: Exclude<ClientMessage, { type: 'hello' }>): void {
+    switch (msg.type) {
+      case 'lobby':
+        this.lobby.subscribers.add(conn);
+        this.send([conn], { type: 'lobby', ...re(msg.id), rooms: this.lobby.listing() });
+        return;
+      case 'create':
+        return this.create(conn, player, msg);
+      case 'join':
+        return this.join(conn, player, msg);
+      case 'watch':
+        return this.watch(conn, msg);
+      case 'leave':
+        return this.leave(conn, player, msg);
+      case 'shot':
+        return this.shot(conn, player, msg);
+      case 'place': {
+        const { room, game } = this.onTurn(player, msg.room, msg.stateId);
+        const next = { ...room.state, game: placeCueBall(game, player.id, msg.cueBall), stateId: room.state.stateId + 1 };
+        this.move(room, next, { type: 'place', player: player.id, cueBall: msg.cueBall }, conn, msg.id);
+        return;
+      }
+      case 'decide': {
+        const { room, game } = this.onTurn(player, msg.room, msg.stateId);
+        this.move(room, afterMove(room.state, decide(game, player.id, msg.choice), 'played', this.now()), { type: 'decide', player: player.id, choice: msg.choice }, conn, msg.id);
+        return;
+      }
+      case 'concede': {
+        const { room, game } = this.inPlay(player, msg.room);
+        this.move(room, afterMove(room.state, concede(game, player.id), 'concession', this.now()), { type: 'concede', player: player.id }, conn, msg.id);
+        return;
+      }
+      case 'claim':
+        return this.claim(conn, player, msg);
+      case 'rematch':
+        return this.rematch(conn, player, msg);
+      case 'chat': {
+        const room = this.room(msg.room);
+        if (!this.seated(room, player.id) && !room.spectators.has(conn)) throw new ServiceError('not-seated', 'only the players and spectators of a room may chat there');
+        this.send(this.members(room), { type: 'chat', room: room.state.id, from: player, text: msg.text, at: this.now() });
+        return;
+      }
+    }
+  }
+
+  private hello(conn: ConnId, msg: Msg<'hello'>): void {
+    if (this.lobby.playerOf(conn)) throw new ServiceError('bad-message', 'this socket has said hello already');
+    let player: PlayerRef;
+    let token: string;
+    if (msg.token !== undefined) {
+      const row = this.store.playerByTokenHash(hashToken(msg.token));
+      if (!row) throw new ServiceError('bad-token', 'unknown token: say hello without one to start as a new guest');
+      player = { id: String(row.id), name: row.name };
+      token = msg.token;
+    } else {
+      const name = msg.name ?? this.madeUpName();
+      if (this.store.nameTaken(name)) throw new ServiceError('name-taken', `the name "${name}" is taken`);
+      token = randomBytes(32).toString('base64url');
+      const row = this.store.createPlayer(name, hashToken(token));
+      player = { id: String(row.id), name: row.name };
+    }
+    const back = this.lobby.attach(conn, player);
+    this.send([conn], { type: 'welcome', ...re(msg.id), player, token });
+    for (const room of this.roomsOf(player.id)) {
+      room.holdsOver.delete(player.id);
+      if (back) this.broadcastRoom(room);
+      else this.send([conn], { type: 'room', room: this.view(room) });
+    }
+  }
+
+  private madeUpName(): string {
+    for (;;) {
+      const name = `Guest-${randomBytes(3).readUIntLE(0, 3) % 1_000_000}`;
+      if (!this.store.nameTaken(name)) return name;
+    }
+  }
+
+  private create(conn: ConnId, player: PlayerRef, msg: Msg<'create'>): void {
+    let open = 0;
+    for (const room of this.lobby.rooms.values()) {
+      if (room.state.createdBy === player.id && (room.state.status === 'waiting' || room.state.status === 'playing')) open++;
+    }
+    if (open >= MAX_OPEN_ROOMS_PER_PLAYER) throw new ServiceError('too-many-rooms', `at most ${MAX_OPEN_ROOMS_PER_PLAYER} open rooms per player`);
+    const state: RoomState = {
+      id: randomBytes(6).toString('base64url'),
+      kind: msg.kind,
+      raceTo: msg.raceTo ?? DEFAULT_RACE[msg.kind],
+      private: msg.private ?? false,
+      shotClock: msg.shotClock ?? 0,
+      createdBy: player.id,
+      seats: [player],
+      status: 'waiting',
+      stateId: 0,
+      game: null,
+      matchId: null,
+      order: [],
+      seed: 0,
+      frame: 0,
+      frames: msg.kind === 'snooker' ? {} : null,
+      deadline: null,
+      rematch: [],
+      winner: null,
+      how: null,
+    };
+    this.store.createRoom({ ...state, createdBy: Number(player.id), state: JSON.stringify(state) });
+    const room = this.addRoom(new Room(state));
+    this.broadcastRoom(room, conn, msg.id);
+    if (!state.private) this.lobbyChanged = true;
+  }
+
+  private join(conn: ConnId, player: PlayerRef, msg: Msg<'join'>): void {
+    const room = this.room(msg.room);
+    if (this.seated(room, player.id)) {
+      this.send([conn], { type: 'room', ...re(msg.id), room: this.view(room) });
+      return;
+    }
+    if (room.state.status !== 'waiting' || room.state.seats.length >= 2) throw new ServiceError('room-full', `room ${msg.room} has both its players`);
+    const seats = [...room.state.seats, player];
+    this.startMatch(room, { ...room.state, seats, order: seats.map((p) => p.id) }, conn, msg.id);
+    this.index(room);
+  }
+
+  /** A new match in the room: the first of `order` breaks. */
+  private startMatch(room: Room, base: RoomState, conn: ConnId, id: Re): void {
+    const now = this.now();
+    const seeded: RoomState = { ...base, seed: randomSeed(), frame: 0, frames: base.kind === 'snooker' ? {} : null, rematch: [], winner: null, how: null, status: 'playing' };
+    const started: RoomState = { ...seeded, stateId: base.stateId + 1, game: gameFor(seeded, 0) };
+    const [a, b] = started.order;
+    let next: RoomState = { ...started, deadline: deadlineAfter(started, now) };
+    this.store.startMatch({ roomId: started.id, kind: started.kind, raceTo: started.raceTo, player1: Number(a), player2: Number(b), seed: started.seed }, (matchId) => {
+      next = { ...next, matchId };
+      return this.change(next, { type: 'start', order: started.order, seed: started.seed });
+    });
+    room.state = next;
+    this.broadcastRoom(room, conn, id);
+    this.lobbyChanged = true;
+  }
+
+  private watch(conn: ConnId, msg: Msg<'watch'>): void {
+    const room = this.room(msg.room);
+    room.spectators.add(conn);
+    let set = this.watching.get(conn);
+    if (!set) this.watching.set(conn, (set = new Set()));
+    set.add(room.state.id);
+    this.broadcastRoom(room, conn, msg.id);
+    if (!room.state.private) this.lobbyChanged = true;
+  }
+
+  private leave(conn: ConnId, player: PlayerRef, msg: Msg<'leave'>): void {
+    const room = this.room(msg.room);
+    if (room.spectators.delete(conn)) {
+      this.watching.get(conn)?.delete(room.state.id);
+      this.send([conn], { type: 'left', ...re(msg.id), room: room.state.id });
+      this.broadcastRoom(room);
+      this.lobbyChanged = true;
+      return;
+    }
+    if (!this.seated(room, player.id)) throw new ServiceError('not-seated', `you are not in room ${msg.room}`);
+    const s = room.state;
+    if (s.status === 'waiting') {
+      const seats = s.seats.filter((p) => p.id !== player.id);
+      const next: RoomState = { ...s, seats, status: seats.length === 0 ? 'closed' : 'waiting' };
+      this.store.saveChanges(this.change(next));
+      room.state = next;
+      this.seatsOf.get(player.id)?.delete(s.id);
+      if (next.status === 'closed') this.lobby.rooms.delete(s.id);
+      this.lobbyChanged = true;
+    } else if (s.status === 'playing' && s.game) {
+      // Leaving a game in play concedes it.
+      this.move(room, afterMove(s, concede(s.game, player.id), 'concession', this.now()), { type: 'concede', player: player.id });
+    }
+    this.send([conn], { type: 'left', ...re(msg.id), room: s.id });
+    if (room.state.status !== 'closed') this.broadcastRoom(room);
+  }
+
+  private shot(conn: ConnId, player: PlayerRef, msg: Msg<'shot'>): void {
+    const { room, game } = this.onTurn(player, msg.room, msg.stateId);
+    const shot = { ...msg.shot, player: player.id };
+    const played = playShot(game, shot, msg.cueBall);
+    const now = this.now();
+    const moved = afterMove(room.state, played.game, 'played', now);
+    const action = { type: 'shot', shot, ...(msg.cueBall ? { cueBall: msg.cueBall } : {}) };
+    // A snooker frame won but not the match: the frame's end and the next frame are two changes.
+    const frameOver = moved.game !== played.game;
+    const first: RoomState = frameOver ? { ...moved, game: played.game, frame: room.state.frame, deadline: null } : moved;
+    const after: RoomState = frameOver ? { ...moved, stateId: moved.stateId + 1 } : moved;
+    const changes = [this.change(first, action)];
+    if (frameOver) changes.push(this.change(after, { type: 'frame', frame: after.frame }));
+    this.store.saveChanges(...changes);
+    room.state = after;
+    const o = played.outcome;
+    const message: ServerMessage = {
+      type: 'shot',
+      room: room.state.id,
+      stateId: first.stateId,
+      shot,
+      ...(msg.cueBall ? { cueBall: msg.cueBall } : {}),
+      outcome: { hash: o.hash, balls: o.balls, events: o.events, duration: o.duration },
+      game: played.game,
+      ...(first.deadline === null ? {} : { deadline: first.deadline }),
+    };
+    const members = this.members(room);
+    this.send(
+      members.filter((c) => c !== conn),
+      message,
+    );
+    this.send([conn], { ...message, ...re(msg.id) });
+    if (frameOver || after.status !== 'playing') this.broadcastRoom(room);
+    if (after.status !== 'playing') this.lobbyChanged = true;
+  }
+
+  private claim(conn: ConnId, player: PlayerRef, msg: Msg<'claim'>): void {
+    const { room, game } = this.inPlay(player, msg.room);
+    const other = room.state.seats.find((p) => p.id !== player.id)!;
+    const dropped = this.lobby.droppedSince(other.id);
+    if (dropped === undefined) throw new ServiceError('not-claimable', `${other.name} is connected`);
+    const until = dropped + this.options.seatHoldMs;
+    if (this.now() < until) throw new ServiceError('not-claimable', `${other.name}'s seat is held for ${Math.ceil((until - this.now()) / 1000)} s more`);
+    this.move(room, afterMove(room.state, concede(game, other.id), 'claim', this.now()), { type: 'claim', player: player.id }, conn, msg.id);
+  }
+
+  private rematch(conn: ConnId, player: PlayerRef, msg: Msg<'rematch'>): void {
+    const room = this.room(msg.room);
+    if (!this.seated(room, player.id)) throw new ServiceError('not-seated', `you are not a player of room ${msg.room}`);
+    const s = room.state;
+    if (s.status !== 'over' || s.seats.length < 2) throw new ServiceError('not-playing', 'a rematch is asked for once the game is over');
+    const asked = s.rematch.includes(player.id) ? s.rematch : [...s.rematch, player.id];
+    if (asked.length < 2) {
+      const next = { ...s, rematch: asked };
+      this.store.saveChanges(this.change(next));
+      room.state = next;
+      this.broadcastRoom(room, conn, msg.id);
+      return;
+    }
+    // The other player breaks the new match.
+    this.startMatch(room, { ...s, order: [...s.order].reverse() }, conn, msg.id);
+  }
+
+  /** Makes a move's state current: stored with its action (and the result, when it ends the match), then sent. */
+  private move(room: Room, next: RoomState, action: object, conn?: ConnId, id?: Re): void {
+    this.store.saveChanges(this.change(next, action));
+    room.state = next;
+    this.broadcastRoom(room, conn, id);
+    if (next.status !== 'playing') this.lobbyChanged = true;
+  }
+
+  /** The store's record of a room's new state: its action in the match log, and a result once over. */
+  private change(next: RoomState, action?: object): RoomChange {
+    const logged = action !== undefined && next.matchId !== null;
+    const over = next.status === 'over' && next.winner !== null && next.matchId !== null && next.game !== null;
+    const loser = over ? next.order.find((p) => p !== next.winner) : undefined;
+    return {
+      roomId: next.id,
+      status: next.status,
+      state: JSON.stringify(next),
+      ...(logged ? { action: { matchId: next.matchId!, seq: next.stateId, json: JSON.stringify(action) } } : {}),
+      ...(over && loser !== undefined
+        ? { result: { matchId: next.matchId!, winner: Number(next.winner), loser: Number(loser), how: next.how ?? 'played', scores: JSON.stringify(scoresOf(next)) } }
+        : {}),
+    };
+  }
+
+  private room(id: string): Room {
+    const room = this.lobby.rooms.get(id);
+    if (!room || room.state.status === 'closed') throw new ServiceError('no-room', `there is no room ${id}`);
+    return room;
+  }
+
+  private seated(room: Room, playerId: string): boolean {
+    return room.state.seats.some((p) => p.id === playerId);
+  }
+
+  private inPlay(player: PlayerRef, id: string): { room: Room; game: Game } {
+    const room = this.room(id);
+    if (!this.seated(room, player.id)) throw new ServiceError('not-seated', `you are not a player of room ${id}`);
+    if (room.state.status !== 'playing' || room.state.game === null) throw new ServiceError('not-playing', `room ${id} has no game in play`);
+    return { room, game: room.state.game };
+  }
+
+  private onTurn(player: PlayerRef, id: string, stateId: number): { room: Room; game: Game } {
+    const found = this.inPlay(player, id);
+    if (stateId !== found.room.state.stateId) throw new ServiceError('stale-state', `the room is at stateId ${found.room.state.stateId}, not ${stateId}`);
+    if (found.game.turn !== player.id) throw new ServiceError('not-your-turn', `it is not your turn`);
+    return found;
+  }
+
+  private addRoom(room: Room): Room {
+    this.lobby.rooms.set(room.state.id, room);
+    this.index(room);
+    return room;
+  }
+
+  private index(room: Room): void {
+    for (const p of room.state.seats) {
+      let set = this.seatsOf.get(p.id);
+      if (!set) this.seatsOf.set(p.id, (set = new Set()));
+      set.add(room.state.id);
+    }
+  }
+
+  private roomsOf(playerId: string): Room[] {
+    const out: Room[] = [];
+    for (const id of this.seatsOf.get(playerId) ?? []) {
+      const room = this.lobby.rooms.get(id);
+      if (room && room.state.status !== 'closed' && this.seated(room, playerId)) out.push(room);
+    }
+    return out;
+  }
+
+  /** Every socket in the room: the seated players' (all their tabs) and the spectators'. */
+  private members(room: Room): ConnId[] {
+    const out = new Set<ConnId>(room.spectators);
+    for (const p of room.state.seats) for (const c of this.lobby.socketsOf(p.id)) out.add(c);
+    return [...out];
+  }
+
+  private view(room: Room) {
+    return roomView(room, (p) => {
+      const dropped = this.lobby.droppedSince(p.id);
+      return dropped === undefined ? { connected: true } : { connected: false, heldUntil: dropped + this.options.seatHoldMs };
+    });
+  }
+
+  /** `room` to everyone there; the one who asked gets it with `re`. */
+  private broadcastRoom(room: Room, conn?: ConnId, id?: Re): void {
+    const view = this.view(room);
+    const members = this.members(room);
+    this.send(
+      members.filter((c) => c !== conn),
+      { type: 'room', room: view },
+    );
+    if (conn !== undefined) this.send([conn], { type: 'room', ...re(id), room: view });
+  }
+
+  private send(to: readonly ConnId[], message: ServerMessage): void {
+    if (to.length > 0) this.out.push({ to, message });
+  }
+
+  private fail(conn: ConnId, id: Re, err: unknown): void {
+    const e = describeError(err);
+    if (e.internal) this.log(`internal error: ${(err as Error).stack ?? String(err)}`);
+    this.send([conn], { type: 'error', ...re(id), code: e.code, message: e.message });
+  }
+
+  private flush(): Delivery[] {
+    if (this.lobbyChanged) {
+      this.lobbyChanged = false;
+      if (this.lobby.subscribers.size > 0) this.send([...this.lobby.subscribers], { type: 'lobby', rooms: this.lobby.listing() });
+    }
+    const out = this.out;
+    this.out = [];
+    return out;
+  }
+}
+
+function re(id: Re): { re?: string | number } {
+  return id === undefined ? {} : { re: id };
+}
+
+/** A finished match's score: frames in snooker, the rules' scores otherwise. */
+function scoresOf(s: RoomState): Record<string, number> {
+  return s.kind === 'snooker' ? { ...(s.frames ?? {}) } : { ...(s.game?.scores ?? {}) };
+}
