@@ -1,0 +1,158 @@
+// The game service in-process (a real SQLite file, a clock the test moves): sessions, rooms, turns,
+// the shot clock, held seats and claims, rematches, limits. The same service runs behind the
+// WebSocket binding in tests/integration.
+import { afterEach, describe, expect, it } from 'vitest';
+import { simulate } from '../../../shared/physics/index.ts';
+import type { RoomView, ServerMessage } from '../../../shared/protocol/index.ts';
+import { sceneOf, strikeOf } from '../../../shared/rules/index.ts';
+import { last, openHarness, type Harness } from '../../support/service-harness.ts';
+
+let h: Harness;
+afterEach(() => h?.close());
+
+function welcome(h: Harness, conn: number, name?: string, token?: string) {
+  h.send(conn, { type: 'hello', ...(name ? { name } : {}), ...(token ? { token } : {}) });
+  return last(h, conn, 'welcome');
+}
+
+/** Two players at a nine-ball table (connections 1 and 2); returns the room. */
+function table(h: Harness, kind: 'nineball' | 'eightball' | 'snooker' | 'threecushion' = 'nineball', extra: { shotClock?: number; raceTo?: number } = {}): RoomView {
+  welcome(h, 1, 'Ann');
+  welcome(h, 2, 'Bob');
+  h.send(1, { type: 'create', kind, ...extra });
+  const id = last(h, 1, 'room').room.id;
+  h.send(2, { type: 'join', room: id });
+  return last(h, 2, 'room').room;
+}
+
+const errorOf = (msgs: ServerMessage[] | undefined) => msgs?.find((m) => m.type === 'error') as Extract<ServerMessage, { type: 'error' }> | undefined;
+
+describe('the game service', () => {
+  it('welcomes guests with unique names and made-up ones, and knows them again by token', () => {
+    h = openHarness();
+    const ann = welcome(h, 1, 'Ann');
+    expect(ann.player.name).toBe('Ann');
+    expect(ann.token.length).toBeGreaterThan(30);
+    expect(errorOf(h.send(2, { type: 'hello', name: 'ANN' }).get(2))?.code).toBe('name-taken');
+    const guest = welcome(h, 3);
+    expect(guest.player.name).toMatch(/^Guest-\d+$/);
+    const again = welcome(h, 4, undefined, ann.token);
+    expect(again.player).toEqual(ann.player);
+    expect(errorOf(h.send(5, { type: 'hello', token: 'forged' }).get(5))?.code).toBe('bad-token');
+    expect(errorOf(h.send(6, { type: 'lobby' }).get(6))?.code).toBe('not-welcomed');
+  });
+
+  it('lists public rooms in the lobby, keeps private ones out, and updates subscribers', () => {
+    h = openHarness();
+    welcome(h, 1, 'Ann');
+    welcome(h, 2, 'Bob');
+    h.send(2, { type: 'lobby' });
+    expect(last(h, 2, 'lobby').rooms).toEqual([]);
+    h.send(1, { type: 'create', kind: 'snooker', raceTo: 3 });
+    h.send(1, { type: 'create', kind: 'nineball', private: true });
+    const rooms = last(h, 2, 'lobby').rooms;
+    expect(rooms).toHaveLength(1);
+    expect(rooms[0]).toMatchObject({ kind: 'snooker', raceTo: 3, players: [{ name: 'Ann' }], spectators: 0, status: 'waiting' });
+  });
+
+  it('starts the game on join, the creator breaking, and refuses a third player', () => {
+    h = openHarness();
+    const room = table(h);
+    expect(room).toMatchObject({ status: 'playing', stateId: 1, players: [{ name: 'Ann', connected: true }, { name: 'Bob', connected: true }] });
+    expect(room.game!.turn).toBe(room.players[0]!.id);
+    welcome(h, 3, 'Cid');
+    expect(errorOf(h.send(3, { type: 'join', room: room.id }).get(3))?.code).toBe('room-full');
+    expect(errorOf(h.send(3, { type: 'join', room: 'nowhere' }).get(3))?.code).toBe('no-room');
+  });
+
+  it('plays a shot: everyone gets the outcome of simulate(sceneOf(game)) and the next game; stale and out-of-turn moves change nothing', () => {
+    h = openHarness();
+    const room = table(h);
+    h.send(3, { type: 'hello', name: 'Eve' });
+    h.send(3, { type: 'watch', room: room.id });
+    const shot = { ball: 'cue', heading: 0, speed: 7, side: 0, top: 0.1 };
+    expect(errorOf(h.send(2, { type: 'shot', room: room.id, stateId: 1, shot }).get(2))?.code).toBe('not-your-turn');
+    expect(errorOf(h.send(1, { type: 'shot', room: room.id, stateId: 0, shot }).get(1))?.code).toBe('stale-state');
+    const got = h.send(1, { type: 'shot', room: room.id, stateId: 1, shot });
+    const expected = simulate(sceneOf(room.game!), strikeOf({ ...shot, player: room.players[0]!.id }));
+    for (const conn of [1, 2, 3]) {
+      const m = got.get(conn)!.find((x) => x.type === 'shot') as Extract<ServerMessage, { type: 'shot' }>;
+      expect(m.stateId).toBe(2);
+      expect(m.outcome.hash).toBe(expected.hash);
+      expect(m.game.shots).toBe(1);
+    }
+    expect(errorOf(h.send(1, { type: 'shot', room: room.id, stateId: 1, shot }).get(1))?.code).toBe('stale-state');
+  });
+
+  it('refuses a shot the physics or the rules refuse, and changes nothing', () => {
+    h = openHarness();
+    const room = table(h);
+    const base = { type: 'shot', room: room.id, stateId: 1 } as const;
+    expect(errorOf(h.send(1, { ...base, shot: { ball: 'cue', heading: 0, speed: 3, side: 0.45, top: 0.45 } }).get(1))?.code).toBe('miscue');
+    expect(errorOf(h.send(1, { ...base, shot: { ball: '9', heading: 0, speed: 3, side: 0, top: 0 } }).get(1))?.code).toBe('wrong-ball');
+    expect(errorOf(h.send(1, { ...base, shot: { ball: 'cue', heading: 0, speed: 3, side: 0, top: 0 }, cueBall: { x: 0.5, y: 0 } }).get(1))?.code).toBe('bad-placement');
+    h.send(1, { type: 'watch', room: room.id });
+    expect(last(h, 1, 'room').room.stateId).toBe(1);
+  });
+
+  it('runs the shot clock: the player who runs out of time is given the game\'s foul', () => {
+    h = openHarness();
+    const room = table(h, 'nineball', { shotClock: 30 });
+    expect(room.deadline).toBe(h.clock + 30_000);
+    h.clock += 29_000;
+    expect(h.tick().size).toBe(0);
+    h.clock += 1_000;
+    h.tick();
+    const after = last(h, 2, 'room').room;
+    expect(after.stateId).toBe(2);
+    expect(after.game!.turn).toBe(room.players[1]!.id);
+    expect(after.game!.verdict).toMatchObject({ foul: true, message: expect.stringContaining('ran out of time') });
+    expect(after.deadline).toBe(h.clock + 30_000);
+  });
+
+  it('holds a dropped seat, resumes it by token, and lets the opponent claim after the hold', () => {
+    h = openHarness({ seatHoldMs: 60_000 });
+    const room = table(h);
+    const annToken = last(h, 1, 'welcome').token;
+    h.drop(1);
+    const seen = last(h, 2, 'room').room.players[0]!;
+    expect(seen).toMatchObject({ connected: false, heldUntil: h.clock + 60_000 });
+    expect(errorOf(h.send(2, { type: 'claim', room: room.id }).get(2))?.code).toBe('not-claimable');
+    // Back within the hold: the same seat, the current state.
+    h.send(7, { type: 'hello', token: annToken });
+    expect(last(h, 7, 'room').room).toMatchObject({ id: room.id, stateId: 1, players: [{ connected: true }, { connected: true }] });
+    h.drop(7);
+    h.clock += 60_000;
+    h.tick();
+    h.send(2, { type: 'claim', room: room.id });
+    expect(last(h, 2, 'room').room).toMatchObject({ status: 'over', winner: room.players[1]!.id });
+    expect(h.store.resultCount()).toBe(1);
+  });
+
+  it('gives a rematch in the same room when both ask, the other player breaking', () => {
+    h = openHarness();
+    const room = table(h);
+    h.send(1, { type: 'concede', room: room.id });
+    expect(last(h, 1, 'room').room).toMatchObject({ status: 'over', winner: room.players[1]!.id, rematch: [] });
+    h.send(1, { type: 'rematch', room: room.id });
+    expect(last(h, 2, 'room').room.rematch).toEqual([room.players[0]!.id]);
+    h.send(2, { type: 'rematch', room: room.id });
+    const again = last(h, 1, 'room').room;
+    expect(again).toMatchObject({ status: 'playing', stateId: 3 });
+    expect(again.game!.turn).toBe(room.players[1]!.id);
+    expect(h.store.resultCount()).toBe(1);
+  });
+
+  it('limits each player to five open rooms and chat to the room\'s members', () => {
+    h = openHarness();
+    welcome(h, 1, 'Ann');
+    for (let i = 0; i < 5; i++) h.send(1, { type: 'create', kind: 'threecushion' });
+    expect(errorOf(h.send(1, { type: 'create', kind: 'threecushion' }).get(1))?.code).toBe('too-many-rooms');
+    const room = last(h, 1, 'room').room;
+    welcome(h, 2, 'Bob');
+    expect(errorOf(h.send(2, { type: 'chat', room: room.id, text: 'hi' }).get(2))?.code).toBe('not-seated');
+    h.send(2, { type: 'watch', room: room.id });
+    const got = h.send(2, { type: 'chat', room: room.id, text: '<img src=x onerror=alert(1)>' });
+    expect(got.get(1)?.[0]).toMatchObject({ type: 'chat', from: { name: 'Bob' }, text: '<img src=x onerror=alert(1)>' });
+  });
+});
