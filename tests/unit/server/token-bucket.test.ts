@@ -1,0 +1,33 @@
+// The per-socket rate limit: bursts up to the bucket, then the rate.
+import fc from 'fast-check';
+import { describe, expect, it } from 'vitest';
+import { TokenBucket } from '../../../server/ws/token-bucket.ts';
+
+describe('the token bucket', () => {
+  it('takes a burst at once, then refills at the rate', () => {
+    const b = new TokenBucket(20, 40, 0);
+    for (let i = 0; i < 40; i++) expect(b.take(0)).toBe(true);
+    expect(b.take(0)).toBe(false);
+    expect(b.take(49)).toBe(false); // 0.98 of a token
+    expect(b.take(51)).toBe(true);
+    expect(b.take(10_000)).toBe(true); // refilled, but never past the burst
+    let n = 1;
+    while (b.take(10_000)) n++;
+    expect(n).toBe(40);
+  });
+
+  it('never lets more than burst + rate × seconds through (property)', () => {
+    fc.assert(
+      fc.property(fc.array(fc.integer({ min: 0, max: 200 }), { minLength: 1, maxLength: 300 }), (gaps) => {
+        const b = new TokenBucket(20, 40, 0);
+        let t = 0;
+        let passed = 0;
+        for (const g of gaps) {
+          t += g;
+          if (b.take(t)) passed++;
+        }
+        expect(passed).toBeLessThanOrEqual(40 + Math.floor((20 * t) / 1000));
+      }),
+    );
+  });
+});
