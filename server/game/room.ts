@@ -31,7 +31,13 @@ export interface RoomState {
   readonly winner: string | null;
   /** How the match ended: 'played', 'concession', 'claim'. */
   readonly how: string | null;
+  /** Once over: players who have left, and when the room closes by itself (ms since the epoch). */
+  readonly left: readonly string[];
+  readonly closesAt: number | null;
 }
+
+/** How long a finished room stays open for a rematch or a last word (ms). */
+export const OVER_KEEP_MS = 10 * 60 * 1000;
 
 export class Room {
   /** Sockets watching as spectators. */
@@ -72,10 +78,14 @@ export function afterMove(state: RoomState, game: Game, how: string, now: number
       const next: RoomState = { ...state, frames, frame, stateId, game: gameFor(state, frame) };
       return { ...next, deadline: deadlineAfter(next, now) };
     }
-    return { ...state, frames, game, stateId, status: 'over', winner: game.winner, how, deadline: null, rematch: [] };
+    return over({ ...state, frames, game, stateId }, game.winner, how, now);
   }
   const frames = state.kind === 'snooker' ? { ...(state.frames ?? {}), [game.winner]: (state.frames?.[game.winner] ?? 0) + 1 } : state.frames;
-  return { ...state, frames, game, stateId, status: 'over', winner: game.winner, how, deadline: null, rematch: [] };
+  return over({ ...state, frames, game, stateId }, game.winner, how, now);
+}
+
+function over(state: RoomState, winner: string, how: string, now: number): RoomState {
+  return { ...state, status: 'over', winner, how, deadline: null, rematch: [], left: [], closesAt: now + OVER_KEEP_MS };
 }
 
 export function roomView(room: Room, seat: (p: PlayerRef) => { connected: boolean; heldUntil?: number }): RoomView {

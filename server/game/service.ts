@@ -100,6 +100,10 @@ export class GameService {
     const now = this.now();
     for (const room of [...this.lobby.rooms.values()]) {
       const s = room.state;
+      if (s.status === 'over' && s.closesAt !== null && s.closesAt <= now) {
+        this.settle(room, { ...s, status: 'closed' });
+        continue;
+      }
       if (s.status !== 'playing' || s.game === null) continue;
       if (s.deadline !== null && s.deadline <= now) {
         try {
@@ -228,6 +232,8 @@ export class GameService {
       rematch: [],
       winner: null,
       how: null,
+      left: [],
+      closesAt: null,
     };
     this.store.createRoom({ ...state, createdBy: Number(player.id), state: JSON.stringify(state) });
     const room = this.addRoom(new Room(state));
@@ -250,7 +256,7 @@ export class GameService {
   /** A new match in the room: the first of `order` breaks. */
   private startMatch(room: Room, base: RoomState, conn: ConnId, id: Re): void {
     const now = this.now();
-    const seeded: RoomState = { ...base, seed: randomSeed(), frame: 0, frames: base.kind === 'snooker' ? {} : null, rematch: [], winner: null, how: null, status: 'playing' };
+    const seeded: RoomState = { ...base, seed: randomSeed(), frame: 0, frames: base.kind === 'snooker' ? {} : null, rematch: [], winner: null, how: null, left: [], closesAt: null, status: 'playing' };
     const started: RoomState = { ...seeded, stateId: base.stateId + 1, game: gameFor(seeded, 0) };
     const [a, b] = started.order;
     let next: RoomState = { ...started, deadline: deadlineAfter(started, now) };
@@ -286,18 +292,34 @@ export class GameService {
     const s = room.state;
     if (s.status === 'waiting') {
       const seats = s.seats.filter((p) => p.id !== player.id);
-      const next: RoomState = { ...s, seats, status: seats.length === 0 ? 'closed' : 'waiting' };
-      this.store.saveChanges(this.change(next));
-      room.state = next;
-      this.seatsOf.get(player.id)?.delete(s.id);
-      if (next.status === 'closed') this.lobby.rooms.delete(s.id);
-      this.lobbyChanged = true;
+      this.settle(room, { ...s, seats, status: seats.length === 0 ? 'closed' : 'waiting' });
     } else if (s.status === 'playing' && s.game) {
-      // Leaving a game in play concedes it.
-      this.move(room, afterMove(s, concede(s.game, player.id), 'concession', this.now()), { type: 'concede', player: player.id });
+      // Leaving a game in play concedes it (and the concession tells the room).
+      const conceded = afterMove(s, concede(s.game, player.id), 'concession', this.now());
+      this.move(room, { ...conceded, left: [player.id] }, { type: 'concede', player: player.id });
+      this.seatsOf.get(player.id)?.delete(s.id);
+      this.send([conn], { type: 'left', ...re(msg.id), room: s.id });
+      return;
+    } else if (s.status === 'over' && !s.left.includes(player.id)) {
+      // Once both players have left a finished room it closes.
+      const left = [...s.left, player.id];
+      this.settle(room, { ...s, left, status: left.length >= s.seats.length ? 'closed' : 'over' });
     }
+    this.seatsOf.get(player.id)?.delete(s.id);
     this.send([conn], { type: 'left', ...re(msg.id), room: s.id });
     if (room.state.status !== 'closed') this.broadcastRoom(room);
+  }
+
+  /** A change of the room with no move in it (seats, leaving, closing): stored, made current, and a closed room forgotten. */
+  private settle(room: Room, next: RoomState): void {
+    this.store.saveChanges(this.change(next));
+    room.state = next;
+    if (next.status === 'closed') {
+      this.lobby.rooms.delete(next.id);
+      for (const p of next.seats) this.seatsOf.get(p.id)?.delete(next.id);
+      for (const c of room.spectators) this.watching.get(c)?.delete(next.id);
+    }
+    this.lobbyChanged = true;
   }
 
   private shot(conn: ConnId, player: PlayerRef, msg: Msg<'shot'>): void {
@@ -351,6 +373,7 @@ export class GameService {
     if (!this.seated(room, player.id)) throw new ServiceError('not-seated', `you are not a player of room ${msg.room}`);
     const s = room.state;
     if (s.status !== 'over' || s.seats.length < 2) throw new ServiceError('not-playing', 'a rematch is asked for once the game is over');
+    if (s.left.length > 0) throw new ServiceError('not-playing', 'a player has left the room: no rematch');
     const asked = s.rematch.includes(player.id) ? s.rematch : [...s.rematch, player.id];
     if (asked.length < 2) {
       const next = { ...s, rematch: asked };
@@ -429,7 +452,7 @@ export class GameService {
     const out: Room[] = [];
     for (const id of this.seatsOf.get(playerId) ?? []) {
       const room = this.lobby.rooms.get(id);
-      if (room && room.state.status !== 'closed' && this.seated(room, playerId)) out.push(room);
+      if (room && room.state.status !== 'closed' && this.seated(room, playerId) && !room.state.left.includes(playerId)) out.push(room);
     }
     return out;
   }

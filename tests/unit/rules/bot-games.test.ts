@@ -3,7 +3,7 @@
 import { describe, expect, it } from 'vitest';
 import { simulate } from '../../../shared/physics/index.ts';
 import { newGame, type Game } from '../../../shared/rules/index.ts';
-import { playToEnd, type Simulate } from '../../support/rules-bot.ts';
+import { playToEnd, type Simulate } from '../../../bots/strategy.ts';
 
 const play: Simulate = (scene, shot) => simulate(scene, shot);
 

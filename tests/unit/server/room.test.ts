@@ -1,13 +1,13 @@
 // The room's match steps as pure functions: snooker's race of frames with the break alternating,
 // the end of a match, the shot clock's deadline.
 import { describe, expect, it } from 'vitest';
-import { afterMove, gameFor, type RoomState } from '../../../server/game/room.ts';
+import { afterMove, gameFor, OVER_KEEP_MS, type RoomState } from '../../../server/game/room.ts';
 import { concede } from '../../../shared/rules/index.ts';
 
 const base: RoomState = {
   id: 'r1', kind: 'snooker', raceTo: 2, private: false, shotClock: 20, createdBy: 'a',
   seats: [{ id: 'a', name: 'Ann' }, { id: 'b', name: 'Bob' }], status: 'playing', stateId: 1, game: null,
-  matchId: 7, order: ['a', 'b'], seed: 42, frame: 0, frames: {}, deadline: null, rematch: [], winner: null, how: null,
+  matchId: 7, order: ['a', 'b'], seed: 42, frame: 0, frames: {}, deadline: null, rematch: [], winner: null, how: null, left: [], closesAt: null,
 };
 
 describe('a room\'s match', () => {
@@ -23,7 +23,7 @@ describe('a room\'s match', () => {
     expect(s2).toMatchObject({ status: 'playing', frame: 2, frames: { a: 1, b: 1 } });
     expect(s2.game!.turn).toBe('a');
     const s3 = afterMove(s2, concede(s2.game!, 'b'), 'played', 3000);
-    expect(s3).toMatchObject({ status: 'over', winner: 'a', frames: { a: 2, b: 1 }, deadline: null, how: 'played' });
+    expect(s3).toMatchObject({ status: 'over', winner: 'a', frames: { a: 2, b: 1 }, deadline: null, how: 'played', closesAt: 3000 + OVER_KEEP_MS });
   });
 
   it('ends the match at once on a concession, in any game', () => {

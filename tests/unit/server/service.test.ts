@@ -156,3 +156,27 @@ describe('the game service', () => {
     expect(got.get(1)?.[0]).toMatchObject({ type: 'chat', from: { name: 'Bob' }, text: '<img src=x onerror=alert(1)>' });
   });
 });
+
+describe('leaving and closing rooms', () => {
+  it('closes a finished room once both players have left, or by itself after a while', () => {
+    h = openHarness();
+    const room = table(h);
+    h.send(1, { type: 'leave', room: room.id });
+    expect(last(h, 1, 'left').room).toBe(room.id);
+    const seen = last(h, 2, 'room').room;
+    expect(seen).toMatchObject({ status: 'over', winner: room.players[1]!.id });
+    expect(h.inbox(2).filter((m) => m.type === 'room' && m.room.status === 'over')).toHaveLength(1);
+    expect(errorOf(h.send(2, { type: 'rematch', room: room.id }).get(2))?.code).toBe('not-playing');
+    h.send(2, { type: 'leave', room: room.id });
+    expect(errorOf(h.send(2, { type: 'watch', room: room.id }).get(2))?.code).toBe('no-room');
+    // A finished room nobody leaves closes after OVER_KEEP_MS.
+    h.send(1, { type: 'create', kind: 'eightball' });
+    const second = last(h, 1, 'room').room.id;
+    h.send(2, { type: 'join', room: second });
+    h.send(2, { type: 'concede', room: second });
+    h.clock += 10 * 60 * 1000;
+    h.tick();
+    expect(errorOf(h.send(1, { type: 'watch', room: second }).get(1))?.code).toBe('no-room');
+    expect(h.store.resultCount()).toBe(2);
+  });
+});
