@@ -22,6 +22,15 @@ export function bindWebSocket(wss: WebSocketServer, service: GameService, option
   const conns = new Map<ConnId, Conn>();
   let nextId = 1;
 
+  // The service answers every command itself; this guard only keeps a bug from taking the process down.
+  const safely = (what: string, run: () => readonly Delivery[]): void => {
+    try {
+      deliver(run());
+    } catch (err) {
+      console.error(`${what}: ${(err as Error).stack ?? String(err)}`);
+    }
+  };
+
   const deliver = (deliveries: readonly Delivery[]): void => {
     for (const d of deliveries) {
       const text = JSON.stringify(d.message);
@@ -45,15 +54,15 @@ export function bindWebSocket(wss: WebSocketServer, service: GameService, option
         return;
       }
       if (isBinary) {
-        deliver(service.reject(id, 'bad-message', 'frames must be JSON text'));
+        safely('reject', () => service.reject(id, 'bad-message', 'frames must be JSON text'));
         return;
       }
       const parsed = parseClientMessage(data.toString());
-      deliver(parsed.ok ? service.handle(id, parsed.message) : service.reject(id, parsed.code, parsed.message, parsed.re));
+      safely('handle', () => (parsed.ok ? service.handle(id, parsed.message) : service.reject(id, parsed.code, parsed.message, parsed.re)));
     });
     socket.on('close', () => {
       conns.delete(id);
-      deliver(service.close(id));
+      safely('close', () => service.close(id));
     });
     socket.on('error', () => socket.terminate());
   });
@@ -68,7 +77,7 @@ export function bindWebSocket(wss: WebSocketServer, service: GameService, option
       c.socket.ping();
     }
   }, options.pingMs);
-  const ticker = setInterval(() => deliver(service.tick()), options.tickMs);
+  const ticker = setInterval(() => safely('tick', () => service.tick()), options.tickMs);
   pinger.unref();
   ticker.unref();
   return {
