@@ -99,28 +99,30 @@ export class GameService {
   tick(): Delivery[] {
     const now = this.now();
     for (const room of [...this.lobby.rooms.values()]) {
-      const s = room.state;
-      if (s.status === 'over' && s.closesAt !== null && s.closesAt <= now) {
-        this.settle(room, { ...s, status: 'closed' });
-        continue;
-      }
-      if (s.status !== 'playing' || s.game === null) continue;
-      if (s.deadline !== null && s.deadline <= now) {
-        try {
-          this.move(room, afterMove(s, shotClockExpired(s.game), 'played', now), { type: 'clock', player: s.game.turn });
-        } catch (err) {
-          this.log(`shot clock of room ${s.id}: ${(err as Error).stack ?? String(err)}`);
-        }
-      }
-      for (const p of room.state.seats) {
-        const dropped = this.lobby.droppedSince(p.id);
-        if (dropped !== undefined && dropped + this.options.seatHoldMs <= now && !room.holdsOver.has(p.id)) {
-          room.holdsOver.add(p.id);
-          this.broadcastRoom(room);
-        }
+      try {
+        this.timers(room, now);
+      } catch (err) {
+        // A room whose timer fails (say, the disk) stays as it was and is tried again next tick.
+        this.log(`timers of room ${room.state.id}: ${(err as Error).stack ?? String(err)}`);
       }
     }
     return this.flush();
+  }
+
+  private timers(room: Room, now: number): void {
+    const s = room.state;
+    if (s.status === 'over' && s.closesAt !== null && s.closesAt <= now) return this.settle(room, { ...s, status: 'closed' });
+    if (s.status !== 'playing' || s.game === null) return;
+    if (s.deadline !== null && s.deadline <= now) {
+      this.move(room, afterMove(s, shotClockExpired(s.game), 'played', now), { type: 'clock', player: s.game.turn });
+    }
+    for (const p of room.state.seats) {
+      const dropped = this.lobby.droppedSince(p.id);
+      if (dropped !== undefined && dropped + this.options.seatHoldMs <= now && !room.holdsOver.has(p.id)) {
+        room.holdsOver.add(p.id);
+        this.broadcastRoom(room);
+      }
+    }
   }
 
   private welcomed(conn: ConnId): PlayerRef {
