@@ -180,3 +180,22 @@ describe('leaving and closing rooms', () => {
     expect(h.store.resultCount()).toBe(2);
   });
 });
+
+describe('many tabs of one player', () => {
+  it('sends every tab the room\'s messages; the seat stays connected while any tab is open', () => {
+    h = openHarness();
+    const room = table(h);
+    const token = last(h, 2, 'welcome').token;
+    h.send(12, { type: 'hello', token });
+    expect(last(h, 12, 'room').room.id).toBe(room.id);
+    const got = h.send(1, { type: 'shot', room: room.id, stateId: 1, shot: { ball: 'cue', heading: 0, speed: 6, side: 0, top: 0 } });
+    expect(got.get(2)?.[0]?.type).toBe('shot');
+    expect(got.get(12)?.[0]).toEqual(got.get(2)?.[0]);
+    // Closing one tab changes nothing for the room: no message, the seat still connected.
+    expect(h.drop(2).size).toBe(0);
+    h.send(3, { type: 'hello', name: 'Eve' });
+    h.send(3, { type: 'watch', room: room.id });
+    expect(last(h, 3, 'room').room.players[1]).toMatchObject({ connected: true });
+    expect(last(h, 3, 'room').room.players[1]!.heldUntil).toBeUndefined();
+  });
+});
