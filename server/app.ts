@@ -11,6 +11,7 @@ import { VERSION } from './version.ts';
 import { MAX_FRAME_BYTES } from '../shared/protocol/index.ts';
 import { GameService } from './game/service.ts';
 import { Store } from './store.ts';
+import { Api } from './api/routes.ts';
 import { bindWebSocket } from './ws/binding.ts';
 
 export interface RunningServer {
@@ -36,14 +37,15 @@ export const MAX_MESSAGE_BYTES = MAX_FRAME_BYTES;
 export async function startServer(config: Config): Promise<RunningServer> {
   const { db, applied } = openDatabase(config.dbPath, config.migrationsDir);
   let service: GameService;
+  const store = new Store(db);
   try {
-    service = new GameService(new Store(db), { seatHoldMs: config.seatHoldMs });
+    service = new GameService(store, { seatHoldMs: config.seatHoldMs });
   } catch (err) {
     db.close();
     throw err;
   }
   const files = loadStaticFiles(config.clientDir);
-  const http = createServer(createRequestHandler(files, () => ({ ok: db.open, version: VERSION, schema: schemaVersion(db) })));
+  const http = createServer(createRequestHandler(files, () => ({ ok: db.open, version: VERSION, schema: schemaVersion(db) }), new Api(store)));
   try {
     await new Promise<void>((resolve, reject) => {
       const onError = (err: NodeJS.ErrnoException) => {

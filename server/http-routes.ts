@@ -1,5 +1,6 @@
-// Plain HTTP: the client's files and /healthz. Everything else is 404.
+// Plain HTTP: the client's files, /healthz and the JSON API under /api/. Everything else is 404.
 import type { IncomingMessage, ServerResponse } from 'node:http';
+import type { Api } from './api/routes.ts';
 import type { StaticFile } from './static-files.ts';
 
 export interface Health {
@@ -8,9 +9,13 @@ export interface Health {
   readonly schema: number;
 }
 
-export function createRequestHandler(files: ReadonlyMap<string, StaticFile>, health: () => Health) {
+export function createRequestHandler(files: ReadonlyMap<string, StaticFile>, health: () => Health, api?: Api) {
   return (req: IncomingMessage, res: ServerResponse): void => {
     const path = (req.url ?? '/').split('?', 1)[0] ?? '/';
+    if (api && path.startsWith('/api/')) {
+      void api.handle(req, res);
+      return;
+    }
     if (req.method !== 'GET' && req.method !== 'HEAD') {
       send(res, 405, 'application/json', JSON.stringify({ error: 'method not allowed' }), { allow: 'GET, HEAD' });
       return;

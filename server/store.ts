@@ -1,6 +1,7 @@
 // Every SQL statement of the server: players, rooms, matches with their action logs, results.
 // Each write that belongs together is one transaction, so a crash leaves either all of it or none.
 import type { Database } from 'better-sqlite3';
+import { NEW_RATING, rateMatch, type Rating } from './ratings/glicko2.ts';
 
 export interface PlayerRow {
   readonly id: number;
@@ -31,14 +32,28 @@ export interface NewMatch {
   readonly player1: number;
   readonly player2: number;
   readonly seed: number;
+  /** The rules' Game at the start, JSON. */
+  readonly start: string;
+}
+
+/** A verified achievement; `better` sorts it, higher first. */
+export interface RecordRow {
+  readonly what: string;
+  readonly player: number;
+  readonly value: number;
+  readonly better: number;
 }
 
 export interface MatchResult {
   readonly matchId: number;
+  readonly kind: string;
   readonly winner: number;
   readonly loser: number;
   readonly how: string;
   readonly scores: string;
+  /** Whether the result moves the ratings (each player took at least two shots). */
+  readonly rated: boolean;
+  readonly records: readonly RecordRow[];
 }
 
 /** One change of a room: its new snapshot, and the action that made it in its match's log. */
@@ -50,8 +65,53 @@ export interface RoomChange {
   readonly result?: MatchResult;
 }
 
+export interface BoardRow {
+  readonly id: number;
+  readonly name: string;
+  readonly rating: number;
+  readonly rd: number;
+  readonly games: number;
+  readonly wins: number;
+}
+
+export interface RecordEntry {
+  readonly id: number;
+  readonly kind: string;
+  readonly what: string;
+  readonly playerId: number;
+  readonly name: string;
+  readonly value: number;
+  readonly matchId: number | null;
+  readonly practiceId: number | null;
+  readonly createdAt: number;
+}
+
+export interface MatchRow {
+  readonly id: number;
+  readonly kind: string;
+  readonly raceTo: number;
+  readonly player1: number;
+  readonly name1: string;
+  readonly player2: number;
+  readonly name2: string;
+  readonly startedAt: number;
+  readonly finishedAt: number | null;
+  readonly winner: number | null;
+  readonly how: string | null;
+  readonly rated: number | null;
+}
+
+const MATCH_COLUMNS = `m.id, m.kind, m.race_to AS raceTo, m.player1, p1.name AS name1, m.player2, p2.name AS name2,
+  m.started_at AS startedAt, m.finished_at AS finishedAt, r.winner, r.how, r.rated
+  FROM matches m JOIN players p1 ON p1.id = m.player1 JOIN players p2 ON p2.id = m.player2 LEFT JOIN results r ON r.match_id = m.id`;
+
+const RECORD_COLUMNS = `rec.id, rec.kind, rec.what, rec.player_id AS playerId, p.name, rec.value, rec.match_id AS matchId,
+  rec.practice_id AS practiceId, rec.created_at AS createdAt FROM records rec JOIN players p ON p.id = rec.player_id`;
+
 export class Store {
   private readonly s;
+  /** Rated players per kind, counted once and forgotten when a rating is added. */
+  private readonly ratedCount = new Map<string, number>();
 
   constructor(
     private readonly db: Database,
@@ -67,17 +127,47 @@ export class Store {
       ),
       updateRoom: db.prepare<[string, string, number, string]>('UPDATE rooms SET status = ?, state = ?, updated_at = ? WHERE id = ?'),
       openRooms: db.prepare<[], RoomRow>("SELECT id, status, state FROM rooms WHERE status IN ('waiting', 'playing', 'over') ORDER BY created_at, id"),
-      insertMatch: db.prepare<[string, string, number, number, number, number, number]>(
-        'INSERT INTO matches (room_id, kind, race_to, player1, player2, seed, started_at) VALUES (?, ?, ?, ?, ?, ?, ?)',
+      insertMatch: db.prepare<[string, string, number, number, number, number, string, number]>(
+        'INSERT INTO matches (room_id, kind, race_to, player1, player2, seed, start, started_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?)',
       ),
       insertAction: db.prepare<[number, number, string, number]>('INSERT INTO match_actions (match_id, seq, action, created_at) VALUES (?, ?, ?, ?)'),
       actions: db.prepare<[number], { seq: number; action: string }>('SELECT seq, action FROM match_actions WHERE match_id = ? ORDER BY seq'),
-      insertResult: db.prepare<[number, number, number, string, string, number]>(
-        'INSERT OR IGNORE INTO results (match_id, winner, loser, how, scores, finished_at) VALUES (?, ?, ?, ?, ?, ?)',
+      matchStart: db.prepare<[number], { start: string | null }>('SELECT start FROM matches WHERE id = ?'),
+      insertResult: db.prepare<[number, number, number, string, string, number, number]>(
+        'INSERT OR IGNORE INTO results (match_id, winner, loser, how, scores, rated, finished_at) VALUES (?, ?, ?, ?, ?, ?, ?)',
+      ),
+      rating: db.prepare<[string, number], Rating & { games: number; wins: number }>('SELECT rating, rd, vol, games, wins FROM ratings WHERE kind = ? AND player_id = ?'),
+      upsertRating: db.prepare<[string, number, number, number, number, number, number, number]>(
+        `INSERT INTO ratings (kind, player_id, rating, rd, vol, games, wins, updated_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?)
+         ON CONFLICT (kind, player_id) DO UPDATE SET rating = excluded.rating, rd = excluded.rd, vol = excluded.vol,
+           games = excluded.games, wins = excluded.wins, updated_at = excluded.updated_at`,
+      ),
+      insertRecord: db.prepare<[string, string, number, number, number, number | null, number | null, number]>(
+        'INSERT INTO records (kind, what, player_id, value, better, match_id, practice_id, created_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?)',
       ),
       finishMatch: db.prepare<[number, number]>('UPDATE matches SET finished_at = ? WHERE id = ? AND finished_at IS NULL'),
       result: db.prepare<[number], { winner: number; loser: number; how: string; scores: string }>('SELECT winner, loser, how, scores FROM results WHERE match_id = ?'),
       resultCount: db.prepare<[], { n: number }>('SELECT count(*) AS n FROM results'),
+      board: db.prepare<[string, number, number], BoardRow>(
+        `SELECT r.player_id AS id, p.name, r.rating, r.rd, r.games, r.wins FROM ratings r JOIN players p ON p.id = r.player_id
+         WHERE r.kind = ? ORDER BY r.rating DESC, r.player_id LIMIT ? OFFSET ?`,
+      ),
+      boardCount: db.prepare<[string], { n: number }>('SELECT count(*) AS n FROM ratings WHERE kind = ?'),
+      ratingsOf: db.prepare<[number], { kind: string } & BoardRow>(
+        'SELECT kind, player_id AS id, \'\' AS name, rating, rd, games, wins FROM ratings WHERE player_id = ? ORDER BY kind',
+      ),
+      records: db.prepare<[string, number, number], RecordEntry>(`SELECT ${RECORD_COLUMNS} WHERE rec.kind = ? ORDER BY rec.better DESC, rec.id LIMIT ? OFFSET ?`),
+      recordsOf: db.prepare<[number], RecordEntry>(`SELECT ${RECORD_COLUMNS} WHERE rec.player_id = ? ORDER BY rec.kind, rec.better DESC, rec.id`),
+      matchesAll: db.prepare<[number, number], MatchRow>(`SELECT ${MATCH_COLUMNS} ORDER BY m.id DESC LIMIT ? OFFSET ?`),
+      matchesKind: db.prepare<[string, number, number], MatchRow>(`SELECT ${MATCH_COLUMNS} WHERE m.kind = ? ORDER BY m.id DESC LIMIT ? OFFSET ?`),
+      matchesPlayer: db.prepare<[number, number, string | null, string | null, number, number], MatchRow>(
+        `SELECT ${MATCH_COLUMNS} WHERE m.id IN (SELECT id FROM matches WHERE player1 = ? UNION ALL SELECT id FROM matches WHERE player2 = ?)
+         AND (? IS NULL OR m.kind = ?) ORDER BY m.id DESC LIMIT ? OFFSET ?`,
+      ),
+      match: db.prepare<[number], MatchRow & { start: string | null }>(`SELECT ${MATCH_COLUMNS.replace('m.id,', 'm.id, m.start,')} WHERE m.id = ?`),
+      insertPractice: db.prepare<[number, string, number, string, number, number]>(
+        'INSERT INTO practice_runs (player_id, kind, seed, shots, score, created_at) VALUES (?, ?, ?, ?, ?, ?)',
+      ),
     };
   }
 
@@ -106,7 +196,7 @@ export class Store {
 
   /** Starts a match and returns its id. */
   createMatch(m: NewMatch): number {
-    const info = this.s.insertMatch.run(m.roomId, m.kind, m.raceTo, m.player1, m.player2, m.seed, this.now());
+    const info = this.s.insertMatch.run(m.roomId, m.kind, m.raceTo, m.player1, m.player2, m.seed, m.start, this.now());
     return Number(info.lastInsertRowid);
   }
 
@@ -116,14 +206,29 @@ export class Store {
       const now = this.now();
       for (const c of changes) {
         if (c.action) this.s.insertAction.run(c.action.matchId, c.action.seq, c.action.json, now);
-        if (c.result) {
-          // A result is written once: a retried finish finds it there and adds nothing.
-          this.s.insertResult.run(c.result.matchId, c.result.winner, c.result.loser, c.result.how, c.result.scores, now);
-          this.s.finishMatch.run(now, c.result.matchId);
-        }
+        if (c.result) this.finish(c.result, now);
         this.s.updateRoom.run(c.status, c.state, now, c.roomId);
       }
     })();
+  }
+
+  /**
+   * A match's result, its ratings and its records: written once, inside the caller's transaction.
+   * A retried finish finds the result there and adds nothing.
+   */
+  private finish(r: MatchResult, now: number): void {
+    const inserted = this.s.insertResult.run(r.matchId, r.winner, r.loser, r.how, r.scores, r.rated ? 1 : 0, now).changes === 1;
+    if (!inserted) return;
+    this.s.finishMatch.run(now, r.matchId);
+    if (r.rated) {
+      const w = this.s.rating.get(r.kind, r.winner);
+      const l = this.s.rating.get(r.kind, r.loser);
+      const next = rateMatch(w ?? NEW_RATING, l ?? NEW_RATING);
+      this.s.upsertRating.run(r.kind, r.winner, next.winner.rating, next.winner.rd, next.winner.vol, (w?.games ?? 0) + 1, (w?.wins ?? 0) + 1, now);
+      this.s.upsertRating.run(r.kind, r.loser, next.loser.rating, next.loser.rd, next.loser.vol, (l?.games ?? 0) + 1, l?.wins ?? 0, now);
+      this.ratedCount.delete(r.kind);
+    }
+    for (const rec of r.records) this.s.insertRecord.run(r.kind, rec.what, rec.player, rec.value, rec.better, r.matchId, null, now);
   }
 
   /** A new match and the room's change that starts it, in one transaction; returns the match id. */
@@ -144,9 +249,59 @@ export class Store {
     return this.s.actions.all(matchId).map((r) => ({ seq: r.seq, action: JSON.parse(r.action) as unknown }));
   }
 
+  /** The rules' Game a match started from. */
+  matchStart(matchId: number): unknown {
+    const row = this.s.matchStart.get(matchId);
+    if (!row?.start) throw new Error(`match ${matchId} has no start`);
+    return JSON.parse(row.start) as unknown;
+  }
+
   matchResult(matchId: number): { winner: number; loser: number; how: string; scores: unknown } | undefined {
     const r = this.s.result.get(matchId);
     return r && { ...r, scores: JSON.parse(r.scores) as unknown };
+  }
+
+  /** A page of the leaderboard of a kind, best first, and how many players it has. */
+  leaderboard(kind: string, limit: number, offset: number): { total: number; rows: BoardRow[] } {
+    let total = this.ratedCount.get(kind);
+    if (total === undefined) {
+      total = this.s.boardCount.get(kind)!.n;
+      this.ratedCount.set(kind, total);
+    }
+    return { total, rows: this.s.board.all(kind, limit, offset) };
+  }
+
+  ratingsOf(playerId: number): ({ kind: string } & BoardRow)[] {
+    return this.s.ratingsOf.all(playerId);
+  }
+
+  records(kind: string, limit: number, offset: number): RecordEntry[] {
+    return this.s.records.all(kind, limit, offset);
+  }
+
+  recordsOf(playerId: number): RecordEntry[] {
+    return this.s.recordsOf.all(playerId);
+  }
+
+  /** Matches newest first, of a player and of a kind when given. */
+  matches(filter: { player?: number; kind?: string }, limit: number, offset: number): MatchRow[] {
+    if (filter.player !== undefined) return this.s.matchesPlayer.all(filter.player, filter.player, filter.kind ?? null, filter.kind ?? null, limit, offset);
+    if (filter.kind !== undefined) return this.s.matchesKind.all(filter.kind, limit, offset);
+    return this.s.matchesAll.all(limit, offset);
+  }
+
+  match(id: number): (MatchRow & { start: string | null }) | undefined {
+    return this.s.match.get(id);
+  }
+
+  /** A verified practice run and the records it sets, in one transaction; returns its id. */
+  savePractice(run: { player: number; kind: string; seed: number; shots: string; score: number; records: readonly RecordRow[] }): number {
+    return this.db.transaction(() => {
+      const now = this.now();
+      const id = Number(this.s.insertPractice.run(run.player, run.kind, run.seed, run.shots, run.score, now).lastInsertRowid);
+      for (const rec of run.records) this.s.insertRecord.run(run.kind, rec.what, rec.player, rec.value, rec.better, null, id, now);
+      return id;
+    })();
   }
 
   resultCount(): number {

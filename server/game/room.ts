@@ -101,6 +101,7 @@ export function roomView(room: Room, seat: (p: PlayerRef) => { connected: boolea
     status: s.status === 'closed' ? 'over' : s.status,
     stateId: s.stateId,
     game: s.game,
+    ...(s.matchId === null ? {} : { match: s.matchId }),
     ...(s.deadline === null ? {} : { deadline: s.deadline }),
     ...(s.frames === null ? {} : { frames: s.frames }),
     ...(s.status === 'over' ? { rematch: s.rematch, winner: s.winner } : {}),

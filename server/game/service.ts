@@ -2,11 +2,12 @@
 // it takes parsed commands from numbered connections and returns what to send to whom. Every
 // change is computed on copies, written to the store, and only then made current, so a command
 // that fails (bad input, the rules, the physics, the disk) changes nothing for anyone.
-import { createHash, randomBytes } from 'node:crypto';
+import { randomBytes } from 'node:crypto';
 import type { ClientMessage, PlayerRef, ServerMessage } from '../../shared/protocol/index.ts';
 import { MAX_OPEN_ROOMS_PER_PLAYER } from '../../shared/protocol/index.ts';
-import { concede, decide, placeCueBall, playShot, shotClockExpired, type Game } from '../../shared/rules/index.ts';
-import type { RoomChange, Store } from '../store.ts';
+import { achievements, concede, decide, placeCueBall, playShot, replayMatch, shotClockExpired, type Game, type MatchAction } from '../../shared/rules/index.ts';
+import type { MatchResult, RoomChange, Store } from '../store.ts';
+import { hashToken, newToken } from '../tokens.ts';
 import { describeError, ServiceError } from './errors.ts';
 import { Lobby, type ConnId } from './lobby.ts';
 import { afterMove, deadlineAfter, gameFor, Room, roomView, type RoomState } from './room.ts';
@@ -30,10 +31,6 @@ type Msg<T extends ClientMessage['type']> = Extract<ClientMessage, { type: T }>;
 type Re = string | number | undefined;
 
 const DEFAULT_RACE = { nineball: 1, eightball: 1, snooker: 1, threecushion: 15 } as const;
-
-function hashToken(token: string): Buffer {
-  return createHash('sha256').update(token, 'utf8').digest();
-}
 
 function randomSeed(): number {
   return randomBytes(4).readUInt32LE(0);
@@ -188,7 +185,7 @@ export class GameService {
     } else {
       const name = msg.name ?? this.madeUpName();
       if (this.store.nameTaken(name)) throw new ServiceError('name-taken', `the name "${name}" is taken`);
-      token = randomBytes(32).toString('base64url');
+      token = newToken();
       const row = this.store.createPlayer(name, hashToken(token));
       player = { id: String(row.id), name: row.name };
     }
@@ -262,9 +259,10 @@ export class GameService {
     const started: RoomState = { ...seeded, stateId: base.stateId + 1, game: gameFor(seeded, 0) };
     const [a, b] = started.order;
     let next: RoomState = { ...started, deadline: deadlineAfter(started, now) };
-    this.store.startMatch({ roomId: started.id, kind: started.kind, raceTo: started.raceTo, player1: Number(a), player2: Number(b), seed: started.seed }, (matchId) => {
+    const start = JSON.stringify(started.game);
+    this.store.startMatch({ roomId: started.id, kind: started.kind, raceTo: started.raceTo, player1: Number(a), player2: Number(b), seed: started.seed, start }, (matchId) => {
       next = { ...next, matchId };
-      return this.change(next, { type: 'start', order: started.order, seed: started.seed });
+      return this.change(next);
     });
     room.state = next;
     this.broadcastRoom(room, conn, id);
@@ -330,19 +328,20 @@ export class GameService {
     const played = playShot(game, shot, msg.cueBall);
     const now = this.now();
     const moved = afterMove(room.state, played.game, 'played', now);
-    const action = { type: 'shot', shot, ...(msg.cueBall ? { cueBall: msg.cueBall } : {}) };
+    const action: MatchAction = { type: 'shot', player: player.id, shot: msg.shot, ...(msg.cueBall ? { cueBall: msg.cueBall } : {}), hash: played.outcome.hash };
     // A snooker frame won but not the match: the frame's end and the next frame are two changes.
     const frameOver = moved.game !== played.game;
     const first: RoomState = frameOver ? { ...moved, game: played.game, frame: room.state.frame, deadline: null } : moved;
     const after: RoomState = frameOver ? { ...moved, stateId: moved.stateId + 1 } : moved;
     const changes = [this.change(first, action)];
-    if (frameOver) changes.push(this.change(after, { type: 'frame', frame: after.frame }));
+    if (frameOver) changes.push(this.change(after, { type: 'frame', players: after.game!.players, seed: after.seed + after.frame }));
     this.store.saveChanges(...changes);
     room.state = after;
     const o = played.outcome;
     const message: ServerMessage = {
       type: 'shot',
       room: room.state.id,
+      match: first.matchId!,
       stateId: first.stateId,
       shot,
       ...(msg.cueBall ? { cueBall: msg.cueBall } : {}),
@@ -389,26 +388,53 @@ export class GameService {
   }
 
   /** Makes a move's state current: stored with its action (and the result, when it ends the match), then sent. */
-  private move(room: Room, next: RoomState, action: object, conn?: ConnId, id?: Re): void {
+  private move(room: Room, next: RoomState, action: MatchAction, conn?: ConnId, id?: Re): void {
     this.store.saveChanges(this.change(next, action));
     room.state = next;
     this.broadcastRoom(room, conn, id);
     if (next.status !== 'playing') this.lobbyChanged = true;
   }
 
-  /** The store's record of a room's new state: its action in the match log, and a result once over. */
-  private change(next: RoomState, action?: object): RoomChange {
+  /**
+   * The store's record of a room's new state: the action that made it in the match's log and,
+   * when that action ends the match, the result with the records its replay shows.
+   */
+  private change(next: RoomState, action?: MatchAction): RoomChange {
     const logged = action !== undefined && next.matchId !== null;
-    const over = next.status === 'over' && next.winner !== null && next.matchId !== null && next.game !== null;
-    const loser = over ? next.order.find((p) => p !== next.winner) : undefined;
+    const ends = logged && next.status === 'over' && next.winner !== null;
     return {
       roomId: next.id,
       status: next.status,
       state: JSON.stringify(next),
       ...(logged ? { action: { matchId: next.matchId!, seq: next.stateId, json: JSON.stringify(action) } } : {}),
-      ...(over && loser !== undefined
-        ? { result: { matchId: next.matchId!, winner: Number(next.winner), loser: Number(loser), how: next.how ?? 'played', scores: JSON.stringify(scoresOf(next)) } }
-        : {}),
+      ...(ends ? { result: this.result(next, action!) } : {}),
+    };
+  }
+
+  /**
+   * A finished match's result. The match is replayed from its start with the shared rules and
+   * physics (the same replay anyone can run on the record): its records come from the games the
+   * replay passes through, and it is rated when each player took at least two shots.
+   */
+  private result(s: RoomState, last: MatchAction): MatchResult {
+    const matchId = s.matchId!;
+    const record = { start: this.store.matchStart(matchId) as Game, actions: [...this.store.matchActions(matchId).map((a) => a.action as MatchAction), last] };
+    const replayed = replayMatch(record);
+    for (const shot of replayed.shots) {
+      if (shot.recorded !== undefined && shot.recorded !== shot.hash) this.log(`match ${matchId}: action ${shot.index} replays to ${shot.hash}, not ${shot.recorded}`);
+    }
+    const shots = new Map<string, number>();
+    for (const a of record.actions) if (a.type === 'shot') shots.set(a.player, (shots.get(a.player) ?? 0) + 1);
+    const loser = s.order.find((p) => p !== s.winner)!;
+    return {
+      matchId,
+      kind: s.kind,
+      winner: Number(s.winner),
+      loser: Number(loser),
+      how: s.how ?? 'played',
+      scores: JSON.stringify(scoresOf(s)),
+      rated: s.order.every((p) => (shots.get(p) ?? 0) >= 2),
+      records: achievements(record.start, replayed.games).map((a) => ({ what: a.what, player: Number(a.player), value: a.value, better: a.what === 'break-and-run' ? -a.value : a.value })),
     };
   }
 

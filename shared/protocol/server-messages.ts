@@ -31,6 +31,8 @@ export interface RoomView {
   readonly stateId: number;
   /** The rules' Game (players are player ids); null while waiting. */
   readonly game: Game | null;
+  /** The match in play or last played here: its record is GET /api/matches/:id. */
+  readonly match?: number;
   /** The shot clock's end for the player on turn (ms since the epoch). */
   readonly deadline?: number;
   /** Snooker frames won in this match (snooker's raceTo counts frames); the pool and carom games keep their own race. */
@@ -66,6 +68,8 @@ export type ServerMessage =
       readonly type: 'shot';
       readonly re?: string | number;
       readonly room: string;
+      /** The match the shot belongs to (GET /api/matches/:id). */
+      readonly match: number;
       readonly stateId: number;
       /** The shot as simulated, with its player. */
       readonly shot: ShotInput & { readonly player: string };

@@ -65,6 +65,10 @@ export { readOutcome } from './outcome.ts';
 export { ballSet } from './practice.ts';
 export { playShot, shotClockExpired } from './play.ts';
 export type { PlayedShot } from './play.ts';
+export { replayMatch, achievements } from './match-record.ts';
+export type { MatchAction, MatchRecord, Replayed, Achievement } from './match-record.ts';
+export { practiceRun, PRACTICE_KINDS, PRACTICE_OPPONENT } from './practice-run.ts';
+export type { PracticeKind, PracticeRun, PracticeShot } from './practice-run.ts';
 export { SNOOKER_COLOURS, SNOOKER_REDS, SNOOKER_VALUES, POOL_OBJECT_BALLS, CAROM_BALLS } from './racks.ts';
 
 export const GAME_KINDS: readonly GameKind[] = ['nineball', 'eightball', 'snooker', 'threecushion', 'practice'];

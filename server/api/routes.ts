@@ -1,0 +1,184 @@
+// The HTTP API (docs/api.md): leaderboards, records, players, matches with their replays, and
+// practice runs the server plays itself. JSON in and out; reads go straight to the store.
+import { randomBytes } from 'node:crypto';
+import type { IncomingMessage, ServerResponse } from 'node:http';
+import { MiscueError, SimulationInputError } from '../../shared/physics/index.ts';
+import { practiceRun, RuleError, type PracticeKind } from '../../shared/rules/index.ts';
+import { PROVISIONAL_RD } from '../ratings/glicko2.ts';
+import type { MatchRow, RecordEntry, Store } from '../store.ts';
+import { hashToken } from '../tokens.ts';
+import { ApiError, IdParam, LeaderboardQuery, MatchesQuery, parse, PracticeBody, RecordsQuery } from './params.ts';
+
+/** Largest request body accepted (bytes): a practice run of 500 shots fits well within it. */
+export const MAX_BODY_BYTES = 256 * 1024;
+
+type Json = Record<string, unknown>;
+
+const round = (x: number, digits = 2) => Math.round(x * 10 ** digits) / 10 ** digits;
+
+function matchSummary(m: MatchRow): Json {
+  return {
+    id: m.id,
+    kind: m.kind,
+    raceTo: m.raceTo,
+    players: [
+      { id: String(m.player1), name: m.name1 },
+      { id: String(m.player2), name: m.name2 },
+    ],
+    status: m.finishedAt === null ? 'playing' : 'over',
+    result: m.winner === null ? null : { winner: String(m.winner), reason: m.how, rated: m.rated === 1 },
+    startedAt: m.startedAt,
+    finishedAt: m.finishedAt,
+  };
+}
+
+function recordEntry(r: RecordEntry, rank?: number): Json {
+  return {
+    ...(rank === undefined ? {} : { rank }),
+    kind: r.kind,
+    what: r.what,
+    value: r.value,
+    player: { id: String(r.playerId), name: r.name },
+    ...(r.matchId === null ? {} : { match: r.matchId }),
+    ...(r.practiceId === null ? {} : { practice: r.practiceId }),
+    at: r.createdAt,
+  };
+}
+
+export class Api {
+  constructor(private readonly store: Store) {}
+
+  /** Answers a request under /api/; the caller has checked the prefix. */
+  async handle(req: IncomingMessage, res: ServerResponse): Promise<void> {
+    let status = 200;
+    let body: Json;
+    try {
+      body = await this.route(req);
+    } catch (err) {
+      if (err instanceof ApiError) {
+        status = err.status;
+        body = { error: err.error, message: err.message };
+      } else {
+        status = 500;
+        body = { error: 'internal', message: 'the server could not answer' };
+        console.error(`api ${req.method} ${req.url}: ${(err as Error).stack ?? String(err)}`);
+      }
+    }
+    const text = JSON.stringify(body);
+    res.writeHead(status, { 'content-type': 'application/json; charset=utf-8', 'content-length': Buffer.byteLength(text), 'cache-control': 'no-store', 'x-content-type-options': 'nosniff' });
+    res.end(req.method === 'HEAD' ? undefined : text);
+  }
+
+  private async route(req: IncomingMessage): Promise<Json> {
+    const url = new URL(req.url ?? '/', 'http://localhost');
+    const path = url.pathname;
+    const query = Object.fromEntries(url.searchParams);
+    if (path === '/api/practice') {
+      if (req.method !== 'POST') throw new ApiError(405, 'method-not-allowed', 'POST a practice run to /api/practice');
+      return this.practice(await readJson(req));
+    }
+    if (req.method !== 'GET' && req.method !== 'HEAD') throw new ApiError(405, 'method-not-allowed', `${req.method} is not allowed on ${path}`);
+    if (path === '/api/leaderboard') return this.leaderboard(query);
+    if (path === '/api/records') return this.records(query);
+    if (path === '/api/matches') return this.matches(query);
+    const match = /^\/api\/matches\/([^/]+)$/.exec(path);
+    if (match) return this.match(match[1]!);
+    const player = /^\/api\/players\/([^/]+)$/.exec(path);
+    if (player) return this.player(player[1]!);
+    throw new ApiError(404, 'not-found', `no such endpoint: ${path}`);
+  }
+
+  private leaderboard(query: Json): Json {
+    const q = parse(LeaderboardQuery, query);
+    const { total, rows } = this.store.leaderboard(q.kind, q.limit, q.offset);
+    return {
+      kind: q.kind,
+      total,
+      limit: q.limit,
+      offset: q.offset,
+      entries: rows.map((r, i) => ({
+        rank: q.offset + i + 1,
+        player: { id: String(r.id), name: r.name },
+        rating: round(r.rating),
+        rd: round(r.rd),
+        games: r.games,
+        wins: r.wins,
+        provisional: r.rd >= PROVISIONAL_RD,
+      })),
+    };
+  }
+
+  private records(query: Json): Json {
+    const q = parse(RecordsQuery, query);
+    return { kind: q.kind, entries: this.store.records(q.kind, q.limit, q.offset).map((r, i) => recordEntry(r, q.offset + i + 1)) };
+  }
+
+  private matches(query: Json): Json {
+    const q = parse(MatchesQuery, query);
+    const filter = { ...(q.player === undefined ? {} : { player: q.player }), ...(q.kind === undefined ? {} : { kind: q.kind }) };
+    return { limit: q.limit, offset: q.offset, matches: this.store.matches(filter, q.limit, q.offset).map(matchSummary) };
+  }
+
+  private match(idText: string): Json {
+    const id = parse(IdParam, idText);
+    const m = this.store.match(id);
+    if (!m) throw new ApiError(404, 'not-found', `no match ${id}`);
+    return {
+      ...matchSummary(m),
+      start: m.start === null ? null : (JSON.parse(m.start) as unknown),
+      actions: this.store.matchActions(id).map((a) => a.action),
+    };
+  }
+
+  private player(idText: string): Json {
+    const id = parse(IdParam, idText);
+    const p = this.store.playerById(id);
+    if (!p) throw new ApiError(404, 'not-found', `no player ${id}`);
+    const ratings = this.store.ratingsOf(id);
+    const best = new Map<string, RecordEntry>();
+    for (const r of this.store.recordsOf(id)) if (!best.has(r.kind)) best.set(r.kind, r);
+    return {
+      id: String(p.id),
+      name: p.name,
+      ratings: Object.fromEntries(ratings.map((r) => [r.kind, { rating: round(r.rating), rd: round(r.rd), games: r.games, wins: r.wins, provisional: r.rd >= PROVISIONAL_RD }])),
+      games: ratings.reduce((n, r) => n + r.games, 0),
+      wins: ratings.reduce((n, r) => n + r.wins, 0),
+      records: [...best.values()].map((r) => recordEntry(r)),
+      recent: this.store.matches({ player: id }, 10, 0).map(matchSummary),
+    };
+  }
+
+  /** Plays the run's shots from the start of its game, scores it, and keeps it with its records. */
+  private practice(input: unknown): Json {
+    const body = parse(PracticeBody, input, 'bad-body');
+    const player = this.store.playerByTokenHash(hashToken(body.token));
+    if (!player) throw new ApiError(400, 'bad-token', 'token: unknown; say hello over the WebSocket to get one');
+    const seed = body.seed ?? randomBytes(4).readUInt32LE(0);
+    let run;
+    try {
+      run = practiceRun(body.kind as PracticeKind, String(player.id), seed, body.shots);
+    } catch (err) {
+      if (err instanceof RuleError || err instanceof MiscueError || err instanceof SimulationInputError) throw new ApiError(400, 'bad-shot', err.message);
+      throw err;
+    }
+    const records = run.achievements.map((a) => ({ what: a.what, player: player.id, value: a.value, better: a.what === 'break-and-run' ? -a.value : a.value }));
+    const id = this.store.savePractice({ player: player.id, kind: body.kind, seed, shots: JSON.stringify(body.shots), score: run.score, records });
+    return { id, kind: body.kind, seed, score: run.score, shots: run.games.length, records: run.achievements.map((a) => ({ what: a.what, value: a.value })) };
+  }
+}
+
+/** Reads a JSON body of at most MAX_BODY_BYTES. */
+async function readJson(req: IncomingMessage): Promise<unknown> {
+  const chunks: Buffer[] = [];
+  let size = 0;
+  for await (const chunk of req) {
+    size += (chunk as Buffer).length;
+    if (size > MAX_BODY_BYTES) throw new ApiError(413, 'too-large', `the body is larger than ${MAX_BODY_BYTES} bytes`);
+    chunks.push(chunk as Buffer);
+  }
+  try {
+    return JSON.parse(Buffer.concat(chunks).toString('utf8')) as unknown;
+  } catch {
+    throw new ApiError(400, 'bad-body', 'the body is not valid JSON');
+  }
+}

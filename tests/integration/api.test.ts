@@ -1,0 +1,214 @@
+// The HTTP API against a real server and SQLite file: ratings from matches played over the
+// protocol, records only from verified play, practice runs the server replays itself, and a 400
+// naming the parameter for every bad request, which stores nothing.
+import { join } from 'node:path';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { chooseShot } from '../../bots/strategy.ts';
+import { simulate } from '../../shared/physics/index.ts';
+import { newGame, playShot, practiceRun, PRACTICE_OPPONENT, type Game, type PracticeKind, type PracticeShot } from '../../shared/rules/index.ts';
+import { ask, connect, playTurn, until, wsUrl, type Seat } from '../support/game-clients.ts';
+import { startServerProcess, tempDir, type ServerProcess } from '../support/server-process.ts';
+
+let server: ServerProcess;
+let url: string;
+const seats: Seat[] = [];
+
+beforeAll(async () => {
+  server = await startServerProcess({ BAIZE_DB: join(tempDir(), 'baize.db') });
+  url = wsUrl(server.url);
+});
+afterAll(async () => {
+  await Promise.all(seats.map((s) => s.client.close(200)));
+  await server.stop('SIGKILL');
+});
+
+async function get(path: string): Promise<{ status: number; body: any }> {
+  const res = await fetch(`${server.url}${path}`);
+  return { status: res.status, body: await res.json() };
+}
+
+async function post(path: string, body: unknown): Promise<{ status: number; body: any }> {
+  const res = await fetch(`${server.url}${path}`, { method: 'POST', headers: { 'content-type': 'application/json' }, body: typeof body === 'string' ? body : JSON.stringify(body) });
+  return { status: res.status, body: await res.json() };
+}
+
+async function player(name: string): Promise<Seat> {
+  const s = await connect(url, { name });
+  seats.push(s);
+  return s;
+}
+
+/**
+ * A nine-ball match between a and b. With `fouls`, each player in turn strokes the cue ball a few
+ * centimetres into nothing (a foul: the turn passes) until each has played that many, then `loser`
+ * concedes; without, the sound bots play it to its end.
+ */
+async function match(a: Seat, b: Seat, loser: Seat, fouls?: number): Promise<number> {
+  const created = await ask(a, { type: 'create', kind: 'nineball' });
+  if (created.type !== 'room') throw new Error(JSON.stringify(created));
+  const room = created.room.id;
+  await ask(b, { type: 'join', room });
+  await until(a, room, (r) => r.status === 'playing');
+  for (let i = 0; a.rooms.get(room)!.status === 'playing' && (fouls === undefined || i < 2 * fouls); i++) {
+    const r = a.rooms.get(room)!;
+    const seat = r.game!.turn === a.player.id ? a : b;
+    await until(seat, room, (x) => x.stateId === r.stateId);
+    if (fouls === undefined) await playTurn(seat, room);
+    else await ask(seat, { type: 'shot', room, stateId: r.stateId, shot: { ball: 'cue', heading: Math.PI, speed: 0.05, side: 0, top: 0 } });
+    await until(a, room, (x) => x.stateId > r.stateId);
+  }
+  if (a.rooms.get(room)!.status === 'playing') await ask(loser, { type: 'concede', room });
+  await until(a, room, (r) => r.status === 'over');
+  return a.rooms.get(room)!.view!.match!;
+}
+
+/** Whether a shot keeps the player at the table having scored (a pot, a point). */
+function scores(game: Game, shot: PracticeShot, playerId: string): Game | null {
+  try {
+    const next = playShot(game, { ...shot.shot, player: playerId }, shot.cueBall).game;
+    const v = next.verdict!;
+    return !v.foul && (v.potted.length > 0 || (v.points[playerId] ?? 0) > 0) ? next : null;
+  } catch {
+    return null;
+  }
+}
+
+/**
+ * A practice run that scores: a first shot found by a fan of headings and speeds (from a few
+ * places in hand), then the sound bot while it keeps the table (at most `max` shots).
+ */
+function scoringRun(kind: PracticeKind, playerId: string, seed: number, max = 8): PracticeShot[] {
+  let game: Game = newGame(kind, [playerId, PRACTICE_OPPONENT], { seed, raceTo: 1 });
+  const cue = game.balls.find((b) => b.id === (kind === 'threecushion' ? 'white' : 'cue'))!;
+  const places = game.ballInHand === false ? [undefined] : [undefined, { x: cue.x, y: cue.y + 0.1 }, { x: cue.x, y: cue.y - 0.1 }];
+  const shots: PracticeShot[] = [];
+  search: for (const cueBall of places) {
+    for (const speed of [3, 5, 7]) {
+      for (let i = 0; i < 360; i++) {
+        const shot: PracticeShot = { shot: { ball: cue.id, heading: (i * Math.PI) / 180, speed, side: kind === 'threecushion' ? 0.3 : 0, top: 0 }, ...(cueBall ? { cueBall } : {}) };
+        const next = scores(game, shot, playerId);
+        if (next) {
+          shots.push(shot);
+          game = next;
+          break search;
+        }
+      }
+    }
+  }
+  while (shots.length > 0 && shots.length < max && game.winner === null && game.turn === playerId) {
+    const { player: _p, ...shot } = chooseShot(game, 'sound', (scene, s) => simulate(scene, s));
+    shots.push({ shot });
+    game = playShot(game, { ...shot, player: playerId }).game;
+  }
+  return shots;
+}
+
+describe('the HTTP API', () => {
+  it('rates every finished match once: the winner climbs above the loser, and a series adds up', async () => {
+    const a = await player('Rated-A');
+    const b = await player('Rated-B');
+    const ids: number[] = [];
+    for (let i = 0; i < 3; i++) ids.push(await match(a, b, b, 2));
+    const board = await get('/api/leaderboard?kind=nineball');
+    expect(board.status).toBe(200);
+    const entryA = board.body.entries.find((e: any) => e.player.id === a.player.id);
+    const entryB = board.body.entries.find((e: any) => e.player.id === b.player.id);
+    expect(entryA.rank).toBeLessThan(entryB.rank);
+    expect(entryA.rating).toBeGreaterThan(1500);
+    expect(entryB.rating).toBeLessThan(1500);
+    expect(entryA).toMatchObject({ games: 3, wins: 3, provisional: true });
+    expect(entryB).toMatchObject({ games: 3, wins: 0 });
+    expect(board.body.total).toBeGreaterThanOrEqual(2);
+    // Each result moved the ratings: three matches, all rated, newest first.
+    const list = await get(`/api/matches?player=${a.player.id}&kind=nineball`);
+    expect(list.body.matches.map((m: any) => m.id)).toEqual([...ids].reverse());
+    for (const m of list.body.matches) expect(m.result).toMatchObject({ winner: a.player.id, rated: true });
+    const page = await get(`/api/players/${a.player.id}`);
+    expect(page.body).toMatchObject({ id: a.player.id, name: 'Rated-A', games: 3, wins: 3, ratings: { nineball: { games: 3, wins: 3 } } });
+    expect(page.body.recent).toHaveLength(3);
+    // A match conceded at once is not rated.
+    const c = await player('Rated-C');
+    await match(c, b, c, 1);
+    const after = await get(`/api/players/${b.player.id}`);
+    expect(after.body.ratings.nineball.games).toBe(3);
+  }, 120_000);
+
+  it('serves each match as a record that replays to what the server broadcast', async () => {
+    const a = await player('Replay-A');
+    const b = await player('Replay-B');
+    const id = await match(a, b, a);
+    const rec = await get(`/api/matches/${id}`);
+    expect(rec.status).toBe(200);
+    const final = a.rooms.get([...a.rooms.keys()].at(-1)!)!;
+    expect(rec.body).toMatchObject({ id, kind: 'nineball', raceTo: 1, status: 'over', result: { winner: final.view!.winner } });
+    const { replayMatch } = await import('../../shared/rules/index.ts');
+    const replayed = replayMatch(rec.body);
+    const broadcast = a.log.filter((m) => m.type === 'shot' && m.match === id).map((m) => (m as any).outcome.hash);
+    expect(replayed.shots.map((s) => s.hash)).toEqual(broadcast);
+    expect(replayed.shots.every((s) => s.recorded === s.hash)).toBe(true);
+    expect(replayed.shots.length).toBeGreaterThan(2);
+    expect(replayed.game).toEqual(final.game);
+  }, 60_000);
+
+  it('plays practice runs itself and keeps their records; the client sends shots, never a score', async () => {
+    const p = await player('Practiser');
+    for (const kind of ['snooker', 'nineball', 'threecushion'] as const) {
+      // A run that scores, found by playing it locally the way the server will.
+      const seed = 7;
+      const shots = scoringRun(kind, p.player.id, seed);
+      const local = practiceRun(kind, p.player.id, seed, shots);
+      expect(local.score, kind).toBeGreaterThan(0);
+      const res = await post('/api/practice', { token: p.token, kind, seed, shots, score: 1_000_000 });
+      expect(res.status, JSON.stringify(res.body)).toBe(200);
+      expect(res.body).toMatchObject({ kind, seed, score: local.score });
+      if (kind !== 'nineball') {
+        const records = await get(`/api/records?kind=${kind}`);
+        expect(records.body.entries.some((e: any) => e.practice === res.body.id && e.player.id === p.player.id)).toBe(true);
+      }
+    }
+  }, 120_000);
+
+  it('answers every bad parameter with a 400 naming it, unknown ids with a 404, and stores nothing', async () => {
+    const p = await player('Careless');
+    const before = await get('/api/records?kind=snooker&limit=100');
+    const bad: [string, RegExp][] = [
+      ['/api/leaderboard', /kind/],
+      ['/api/leaderboard?kind=pool', /kind/],
+      ['/api/leaderboard?kind=nineball&limit=0', /limit/],
+      ['/api/leaderboard?kind=nineball&limit=101', /limit/],
+      ['/api/leaderboard?kind=nineball&limit=ten', /limit/],
+      ['/api/leaderboard?kind=nineball&offset=-1', /offset/],
+      ['/api/records?kind=eightball', /kind/],
+      ['/api/matches?player=abc', /player/],
+      ['/api/matches?kind=chess', /kind/],
+      ['/api/matches/abc', /id/],
+      ['/api/players/-4', /id/],
+    ];
+    for (const [path, names] of bad) {
+      const r = await get(path);
+      expect(r.status, path).toBe(400);
+      expect(r.body.message, path).toMatch(names);
+    }
+    expect((await get('/api/matches/999999')).status).toBe(404);
+    expect((await get('/api/players/999999')).status).toBe(404);
+    expect((await get('/api/nothing')).status).toBe(404);
+    const shot = { ball: 'cue', heading: 0, speed: 3, side: 0, top: 0 };
+    const posts: [unknown, number, RegExp][] = [
+      ['{"token":', 400, /JSON/],
+      [{ token: p.token, kind: 'snooker' }, 400, /shots/],
+      [{ token: p.token, kind: 'eightball', shots: [{ shot }] }, 400, /kind/],
+      [{ token: 'forged', kind: 'snooker', shots: [{ shot }] }, 400, /token/],
+      [{ token: p.token, kind: 'snooker', shots: [{ shot: { ...shot, speed: 'NaN' } }] }, 400, /speed/],
+      [{ token: p.token, kind: 'snooker', shots: [{ shot: { ...shot, side: 0.45, top: 0.45 } }] }, 400, /shots\[0\].*miscue/],
+      [{ token: p.token, kind: 'snooker', shots: [{ shot: { ...shot, ball: 'red1' } }] }, 400, /shots\[0\]/],
+      [{ token: p.token, kind: 'nineball', seed: 3, shots: [{ shot: { ...shot, speed: 0.3 } }, { shot }] }, 400, /shots\[1\]: the run ended/],
+    ];
+    for (const [body, status, message] of posts) {
+      const r = await post('/api/practice', body);
+      expect(r.status, JSON.stringify(body)).toBe(status);
+      expect(r.body.message, JSON.stringify(body)).toMatch(message);
+    }
+    expect((await get('/api/records?kind=snooker&limit=100')).body).toEqual(before.body);
+    expect((await get(`/api/players/${p.player.id}`)).body).toMatchObject({ games: 0, records: [] });
+  }, 60_000);
+});
