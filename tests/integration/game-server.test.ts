@@ -8,7 +8,7 @@ import { afterEach, describe, expect, it } from 'vitest';
 import { WebSocket } from 'ws';
 import { ProtocolClient } from '../../bots/client.ts';
 import { MAX_FRAME_BYTES, type ServerMessage } from '../../shared/protocol/index.ts';
-import { replayMatch, type MatchRecord } from '../../shared/rules/index.ts';
+import { achievements, replayMatch, type MatchRecord } from '../../shared/rules/index.ts';
 import { ask, connect, playToEnd, playTurn, until, wsUrl, type Seat } from '../support/game-clients.ts';
 import { hostileFrames } from '../support/hostile-messages.ts';
 import { startServerProcess, tempDir, type ServerProcess } from '../support/server-process.ts';
@@ -88,6 +88,14 @@ describe('the game server over real sockets', () => {
     const replayed = replayMatch(record);
     expect(replayed.shots.map((x) => x.hash)).toEqual(shotsOf(a.log, 0).map((m) => m.outcome.hash));
     expect(replayed.game).toEqual(final.game);
+    // The records the match set are those its replay shows, and nothing else.
+    if (kind !== 'eightball') {
+      const listed = (await (await fetch(`${server!.url}/api/records?kind=${kind}&limit=100`)).json()) as { entries: { match?: number; player: { id: string }; value: number }[] };
+      const mine = listed.entries.filter((e) => e.match === matchId).map((e) => ({ player: e.player.id, value: e.value }));
+      const expected = achievements(record.start, replayed.games).map((x) => ({ player: x.player, value: x.value }));
+      const byPlayer = (x: { player: string }, y: { player: string }) => x.player.localeCompare(y.player);
+      expect(mine.sort(byPlayer)).toEqual(expected.sort(byPlayer));
+    }
   }, 240_000);
 
   it('keeps a dropped seat: the player comes back with the token to the current state and plays on', async () => {
