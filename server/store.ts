@@ -132,7 +132,10 @@ export class Store {
       ),
       insertAction: db.prepare<[number, number, string, number]>('INSERT INTO match_actions (match_id, seq, action, created_at) VALUES (?, ?, ?, ?)'),
       actions: db.prepare<[number], { seq: number; action: string }>('SELECT seq, action FROM match_actions WHERE match_id = ? ORDER BY seq'),
-      matchStart: db.prepare<[number], { start: string | null }>('SELECT start FROM matches WHERE id = ?'),
+      shotCounts: db.prepare<[number], { player: string; n: number }>(
+        `SELECT json_extract(action, '$.player') AS player, count(*) AS n FROM match_actions
+         WHERE match_id = ? AND json_extract(action, '$.type') = 'shot' GROUP BY 1`,
+      ),
       insertResult: db.prepare<[number, number, number, string, string, number, number]>(
         'INSERT OR IGNORE INTO results (match_id, winner, loser, how, scores, rated, finished_at) VALUES (?, ?, ?, ?, ?, ?, ?)',
       ),
@@ -249,11 +252,9 @@ export class Store {
     return this.s.actions.all(matchId).map((r) => ({ seq: r.seq, action: JSON.parse(r.action) as unknown }));
   }
 
-  /** The rules' Game a match started from. */
-  matchStart(matchId: number): unknown {
-    const row = this.s.matchStart.get(matchId);
-    if (!row?.start) throw new Error(`match ${matchId} has no start`);
-    return JSON.parse(row.start) as unknown;
+  /** Shots each player has played in a match, from its log. */
+  shotCounts(matchId: number): Map<string, number> {
+    return new Map(this.s.shotCounts.all(matchId).map((r) => [String(r.player), r.n]));
   }
 
   matchResult(matchId: number): { winner: number; loser: number; how: string; scores: unknown } | undefined {

@@ -1,7 +1,7 @@
 // A room: its plain state (persisted as JSON after every change) and the pure steps of its match:
 // starting a game, moving on after a move (snooker frames, the end of the match), the view sent out.
 import type { GameKindName, PlayerRef, RoomView } from '../../shared/protocol/index.ts';
-import { newGame, type Game } from '../../shared/rules/index.ts';
+import { newGame, tallyStep, type Game, type Tally } from '../../shared/rules/index.ts';
 import type { ConnId } from './lobby.ts';
 
 export type RoomStatus = 'waiting' | 'playing' | 'over' | 'closed';
@@ -34,6 +34,8 @@ export interface RoomState {
   /** Once over: players who have left, and when the room closes by itself (ms since the epoch). */
   readonly left: readonly string[];
   readonly closesAt: number | null;
+  /** What the match has achieved so far (snooker breaks, three-cushion runs, nine-ball break-and-runs). */
+  readonly tally: Tally;
 }
 
 /** How long a finished room stays open for a rematch or a last word (ms). */
@@ -64,7 +66,8 @@ export function deadlineAfter(state: RoomState, now: number): number | null {
  * The room after a move produced `game`: a snooker frame won starts the next (the other player
  * breaks) until the race of frames is won; any other game's end ends the match.
  */
-export function afterMove(state: RoomState, game: Game, how: string, now: number): RoomState {
+export function afterMove(before: RoomState, game: Game, how: string, now: number): RoomState {
+  const state = before.game === null ? before : { ...before, tally: tallyStep(before.tally, before.game, game) };
   const stateId = state.stateId + 1;
   if (game.winner === null) {
     const next = { ...state, game, stateId };

@@ -5,7 +5,7 @@
 import { randomBytes } from 'node:crypto';
 import type { ClientMessage, PlayerRef, ServerMessage } from '../../shared/protocol/index.ts';
 import { MAX_OPEN_ROOMS_PER_PLAYER } from '../../shared/protocol/index.ts';
-import { achievements, concede, decide, placeCueBall, playShot, replayMatch, shotClockExpired, type Game, type MatchAction } from '../../shared/rules/index.ts';
+import { concede, decide, EMPTY_TALLY, placeCueBall, playShot, shotClockExpired, tallied, type Game, type MatchAction } from '../../shared/rules/index.ts';
 import type { MatchResult, RoomChange, Store } from '../store.ts';
 import { hashToken, newToken } from '../tokens.ts';
 import { describeError, ServiceError } from './errors.ts';
@@ -233,6 +233,7 @@ export class GameService {
       how: null,
       left: [],
       closesAt: null,
+      tally: EMPTY_TALLY,
     };
     this.store.createRoom({ ...state, createdBy: Number(player.id), state: JSON.stringify(state) });
     const room = this.addRoom(new Room(state));
@@ -255,7 +256,7 @@ export class GameService {
   /** A new match in the room: the first of `order` breaks. */
   private startMatch(room: Room, base: RoomState, conn: ConnId, id: Re): void {
     const now = this.now();
-    const seeded: RoomState = { ...base, seed: randomSeed(), frame: 0, frames: base.kind === 'snooker' ? {} : null, rematch: [], winner: null, how: null, left: [], closesAt: null, status: 'playing' };
+    const seeded: RoomState = { ...base, seed: randomSeed(), frame: 0, frames: base.kind === 'snooker' ? {} : null, rematch: [], winner: null, how: null, left: [], closesAt: null, tally: EMPTY_TALLY, status: 'playing' };
     const started: RoomState = { ...seeded, stateId: base.stateId + 1, game: gameFor(seeded, 0) };
     const [a, b] = started.order;
     let next: RoomState = { ...started, deadline: deadlineAfter(started, now) };
@@ -397,7 +398,7 @@ export class GameService {
 
   /**
    * The store's record of a room's new state: the action that made it in the match's log and,
-   * when that action ends the match, the result with the records its replay shows.
+   * when that action ends the match, its result.
    */
   private change(next: RoomState, action?: MatchAction): RoomChange {
     const logged = action !== undefined && next.matchId !== null;
@@ -411,20 +412,11 @@ export class GameService {
     };
   }
 
-  /**
-   * A finished match's result. The match is replayed from its start with the shared rules and
-   * physics (the same replay anyone can run on the record): its records come from the games the
-   * replay passes through, and it is rated when each player took at least two shots.
-   */
+  /** A finished match's result: rated when each player took at least two shots, with the records its tally holds. */
   private result(s: RoomState, last: MatchAction): MatchResult {
     const matchId = s.matchId!;
-    const record = { start: this.store.matchStart(matchId) as Game, actions: [...this.store.matchActions(matchId).map((a) => a.action as MatchAction), last] };
-    const replayed = replayMatch(record);
-    for (const shot of replayed.shots) {
-      if (shot.recorded !== undefined && shot.recorded !== shot.hash) this.log(`match ${matchId}: action ${shot.index} replays to ${shot.hash}, not ${shot.recorded}`);
-    }
-    const shots = new Map<string, number>();
-    for (const a of record.actions) if (a.type === 'shot') shots.set(a.player, (shots.get(a.player) ?? 0) + 1);
+    const shots = this.store.shotCounts(matchId);
+    if (last.type === 'shot') shots.set(last.player, (shots.get(last.player) ?? 0) + 1);
     const loser = s.order.find((p) => p !== s.winner)!;
     return {
       matchId,
@@ -434,7 +426,7 @@ export class GameService {
       how: s.how ?? 'played',
       scores: JSON.stringify(scoresOf(s)),
       rated: s.order.every((p) => (shots.get(p) ?? 0) >= 2),
-      records: achievements(record.start, replayed.games).map((a) => ({ what: a.what, player: Number(a.player), value: a.value, better: a.what === 'break-and-run' ? -a.value : a.value })),
+      records: tallied(s.kind, s.tally).map((a) => ({ what: a.what, player: Number(a.player), value: a.value, better: a.what === 'break-and-run' ? -a.value : a.value })),
     };
   }
 

@@ -78,38 +78,60 @@ export interface Achievement {
   readonly value: number;
 }
 
+/** What a match has achieved so far, as plain data: folded game by game (tallyStep), read at the end (tallied). */
+export interface Tally {
+  /** Each player's best snooker break or three-cushion run so far. */
+  readonly best: Readonly<Record<PlayerId, number>>;
+  /** Nine-ball: the rack in play, from its break. */
+  readonly rack: { readonly breaker: PlayerId; readonly clean: boolean; readonly shots: number } | null;
+  /** Nine-ball break-and-runs so far. */
+  readonly runs: readonly Achievement[];
+}
+
+export const EMPTY_TALLY: Tally = { best: {}, rack: null, runs: [] };
+
 /**
- * The best achievement of each player in a sequence of games (a replay's, from its start): the
- * highest snooker break, the longest three-cushion run, and every nine-ball rack won by its breaker
- * with no shot by the opponent (its value the shots it took, fewer being better).
+ * The tally after the game went from `prev` to `g` by one action: a scoring snooker visit's break
+ * so far, each three-cushion player's high run, and a nine-ball rack won by its breaker with no
+ * shot by the opponent (its value the shots it took, fewer being better).
  */
-export function achievements(start: Game, games: readonly Game[]): Achievement[] {
-  const out: Achievement[] = [];
-  const best = new Map<PlayerId, number>();
-  const keep = (p: PlayerId, v: number) => {
-    if (v > (best.get(p) ?? 0)) best.set(p, v);
+export function tallyStep(t: Tally, prev: Game, g: Game): Tally {
+  const v = g.verdict;
+  let best = t.best;
+  const keep = (p: PlayerId, value: number) => {
+    if (value > (best[p] ?? 0)) best = { ...best, [p]: value };
   };
-  let prev = start;
-  let rack: { breaker: PlayerId; clean: boolean; shots: number } | null = null;
-  for (const g of games) {
-    const v = g.verdict;
-    // A scoring visit's break so far, after each of its pots.
-    if (g.kind === 'snooker' && v && !v.foul && (v.points[v.player] ?? 0) > 0) keep(v.player, g.break);
-    if (g.kind === 'threecushion') for (const p of g.players) keep(p, g.highRun[p] ?? 0);
-    if (g.kind === 'nineball' && prev.kind === 'nineball' && v && g.shots > prev.shots) {
-      if (prev.phase === 'break') rack = { breaker: prev.breaker, clean: true, shots: 0 };
-      if (rack) {
-        rack.shots++;
-        if (v.player !== rack.breaker) rack.clean = false;
-        if (v.rackWinner !== undefined) {
-          if (rack.clean && v.rackWinner === rack.breaker && v.loss === undefined) out.push({ player: rack.breaker, what: 'break-and-run', value: rack.shots });
-          rack = null;
-        }
+  if (g.kind === 'snooker' && v && !v.foul && (v.points[v.player] ?? 0) > 0) keep(v.player, g.break);
+  if (g.kind === 'threecushion') for (const p of g.players) keep(p, g.highRun[p] ?? 0);
+  let rack = t.rack;
+  let runs = t.runs;
+  if (g.kind === 'nineball' && prev.kind === 'nineball' && v && g.shots > prev.shots) {
+    if (prev.phase === 'break') rack = { breaker: prev.breaker, clean: true, shots: 0 };
+    if (rack) {
+      rack = { ...rack, shots: rack.shots + 1, clean: rack.clean && v.player === rack.breaker };
+      if (v.rackWinner !== undefined) {
+        if (rack.clean && v.rackWinner === rack.breaker && v.loss === undefined) runs = [...runs, { player: rack.breaker, what: 'break-and-run', value: rack.shots }];
+        rack = null;
       }
     }
+  }
+  return best === t.best && rack === t.rack && runs === t.runs ? t : { best, rack, runs };
+}
+
+/** The achievements of a tally: each player's best break or run, and every break-and-run. */
+export function tallied(kind: Game['kind'], t: Tally): Achievement[] {
+  const what: Achievement['what'] | null = kind === 'snooker' ? 'break' : kind === 'threecushion' ? 'run' : null;
+  const best: Achievement[] = what ? Object.entries(t.best).map(([player, value]) => ({ player, what, value })) : [];
+  return [...t.runs, ...best];
+}
+
+/** The achievements of a sequence of games from its start (a replay's or a practice run's). */
+export function achievements(start: Game, games: readonly Game[]): Achievement[] {
+  let t = EMPTY_TALLY;
+  let prev = start;
+  for (const g of games) {
+    t = tallyStep(t, prev, g);
     prev = g;
   }
-  const what = start.kind === 'snooker' ? 'break' : start.kind === 'threecushion' ? 'run' : null;
-  if (what) for (const [player, value] of best) out.push({ player, what, value });
-  return out;
+  return tallied(start.kind, t);
 }
