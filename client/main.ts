@@ -1,37 +1,70 @@
-// The browser client's entry point: today the lobby's status line and the table view.
-import { tableSpec } from '../shared/physics/index.ts';
-import { mountReplay } from './replay-view.ts';
-import { drawTable } from './table-view.ts';
+// The browser client's entry point: one page per path, a guest session over the WebSocket, and
+// links handled here so the page never reloads.
+import { h } from './dom.ts';
+import { Session } from './net/session.ts';
+import { mountLeaderboard } from './pages/leaderboard.ts';
+import { mountLobby } from './pages/lobby.ts';
+import { mountMatch } from './pages/match.ts';
+import { mountPlayer } from './pages/player.ts';
+import { mountPractice } from './pages/practice.ts';
+import { mountRoom } from './pages/room.ts';
 
-interface Health {
-  ok: boolean;
-  version: string;
-  schema: number;
+export interface PageContext {
+  readonly session: Session;
+  readonly navigate: (path: string) => void;
 }
+type Page = (root: HTMLElement, ctx: PageContext, param: string) => () => void;
 
-async function showServerStatus(el: HTMLElement): Promise<void> {
-  try {
-    const res = await fetch('/healthz', { cache: 'no-store' });
-    const health = (await res.json()) as Health;
-    if (!res.ok || !health.ok) throw new Error(`server answered ${res.status}`);
-    el.textContent = `Server online: baize ${health.version}, schema ${health.schema}`;
-    el.className = 'ok';
-  } catch (err) {
-    el.textContent = `Server unreachable: ${(err as Error).message}`;
-    el.className = 'error';
+const ROUTES: [RegExp, Page][] = [
+  [/^\/$/, mountLobby],
+  [/^\/room\/([^/]+)$/, mountRoom],
+  [/^\/practice$/, mountPractice],
+  [/^\/leaderboard$/, mountLeaderboard],
+  [/^\/player\/([^/]+)$/, mountPlayer],
+  [/^\/match\/([^/]+)$/, mountMatch],
+];
+
+const root = document.getElementById('app')!;
+const session = new Session();
+let unmount: (() => void) | undefined;
+
+function route(): void {
+  unmount?.();
+  root.replaceChildren();
+  const path = location.pathname;
+  for (const [re, page] of ROUTES) {
+    const m = re.exec(path);
+    if (m) {
+      unmount = page(root, { session, navigate }, decodeURIComponent(m[1] ?? ''));
+      return;
+    }
   }
+  root.append(h('p', {}, 'No such page. '), h('a', { href: '/', 'data-link': true }, 'Back to the lobby'));
+  unmount = undefined;
 }
 
-const status = document.getElementById('server-status');
-if (status) void showServerStatus(status);
-const canvas = document.getElementById('table');
-if (canvas instanceof HTMLCanvasElement) drawTable(canvas, tableSpec('pool-9ft'));
-const replay = {
-  select: document.getElementById('replay-case'),
-  button: document.getElementById('replay-play'),
-  canvas: document.getElementById('replay-table'),
-  info: document.getElementById('replay-info'),
-};
-if (replay.select instanceof HTMLSelectElement && replay.button instanceof HTMLButtonElement && replay.canvas instanceof HTMLCanvasElement && replay.info) {
-  mountReplay(replay.select, replay.button, replay.canvas, replay.info);
+function navigate(path: string): void {
+  history.pushState(null, '', path);
+  session.onMessage((m) => {
+  if (m.type === 'player' && session.status === 'online') status.textContent = `Playing as ${m.player.name}`;
+});
+route();
 }
+
+document.addEventListener('click', (e) => {
+  const a = (e.target as Element | null)?.closest?.('a[data-link]') as HTMLAnchorElement | null;
+  if (!a || e.ctrlKey || e.metaKey || e.shiftKey) return;
+  e.preventDefault();
+  navigate(a.getAttribute('href')!);
+});
+window.addEventListener('popstate', route);
+
+const status = document.getElementById('server-status')!;
+session.onStatus((s) => {
+  status.textContent = s === 'online' ? `Playing as ${session.player?.name ?? ''}` : s === 'connecting' ? 'Connecting…' : 'Reconnecting…';
+  status.className = s === 'online' ? 'ok' : 'warn';
+});
+session.onMessage((m) => {
+  if (m.type === 'player' && session.status === 'online') status.textContent = `Playing as ${m.player.name}`;
+});
+route();

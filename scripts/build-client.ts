@@ -8,16 +8,23 @@ const ROOT = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 
 export async function buildClient(outDir = resolve(ROOT, 'dist/client')): Promise<string> {
   mkdirSync(outDir, { recursive: true });
-  await build({
-    entryPoints: [resolve(ROOT, 'client/main.ts')],
-    outfile: resolve(outDir, 'app.js'),
-    bundle: true,
-    format: 'esm',
-    target: 'es2022',
-    sourcemap: true,
-    logLevel: 'warning',
-  });
-  for (const name of ['index.html', 'style.css']) copyFileSync(resolve(ROOT, 'client', name), resolve(outDir, name));
+  // The game's bundle, minified (what a first visit loads), and the dev page's apart from it.
+  for (const [entry, out] of [
+    ['client/main.ts', 'app.js'],
+    ['client/dev/main.ts', 'dev.js'],
+  ] as const) {
+    await build({
+      entryPoints: [resolve(ROOT, entry)],
+      outfile: resolve(outDir, out),
+      bundle: true,
+      minify: true,
+      format: 'esm',
+      target: 'es2022',
+      sourcemap: true,
+      logLevel: 'warning',
+    });
+  }
+  for (const name of ['index.html', 'dev.html', 'style.css']) copyFileSync(resolve(ROOT, 'client', name), resolve(outDir, name));
   return outDir;
 }
 

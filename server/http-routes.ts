@@ -3,6 +3,9 @@ import type { IncomingMessage, ServerResponse } from 'node:http';
 import type { Api } from './api/routes.ts';
 import type { StaticFile } from './static-files.ts';
 
+/** Paths of the client's pages: the lobby, a room, practice, the leaderboard, a player, a match. */
+const PAGE = /^\/(?:|practice|leaderboard|(?:room|player|match)\/[A-Za-z0-9_-]{1,64})$/;
+
 export interface Health {
   readonly ok: boolean;
   readonly version: string;
@@ -32,7 +35,8 @@ export function createRequestHandler(files: ReadonlyMap<string, StaticFile>, hea
       send(res, body.ok ? 200 : 503, 'application/json', JSON.stringify(body), { 'cache-control': 'no-store' });
       return;
     }
-    const file = files.get(path);
+    // The client's pages are one document; its router shows the page of the path.
+    const file = files.get(PAGE.test(path) ? '/' : path);
     if (file) {
       send(res, 200, file.contentType, file.body);
       return;

@@ -122,6 +122,7 @@ export class Store {
       playerById: db.prepare<[number], PlayerRow>('SELECT id, name FROM players WHERE id = ?'),
       nameTaken: db.prepare<[string], { one: number }>('SELECT 1 AS one FROM players WHERE name = ? COLLATE NOCASE'),
       insertPlayer: db.prepare<[string, Buffer, number]>('INSERT INTO players (name, token_hash, created_at) VALUES (?, ?, ?)'),
+      renamePlayer: db.prepare<[string, number]>('UPDATE players SET name = ? WHERE id = ?'),
       insertRoom: db.prepare<[string, string, number, number, number, number, number, string, string, number]>(
         'INSERT INTO rooms (id, kind, race_to, private, shot_clock, created_by, created_at, status, state, updated_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)',
       ),
@@ -151,21 +152,34 @@ export class Store {
       finishMatch: db.prepare<[number, number]>('UPDATE matches SET finished_at = ? WHERE id = ? AND finished_at IS NULL'),
       result: db.prepare<[number], { winner: number; loser: number; how: string; scores: string }>('SELECT winner, loser, how, scores FROM results WHERE match_id = ?'),
       resultCount: db.prepare<[], { n: number }>('SELECT count(*) AS n FROM results'),
+      // The page is cut from the covering index ratings_board first, so that an OFFSET skips index
+      // entries only, not a rating row and a player row for each place skipped.
       board: db.prepare<[string, number, number], BoardRow>(
-        `SELECT r.player_id AS id, p.name, r.rating, r.rd, r.games, r.wins FROM ratings r JOIN players p ON p.id = r.player_id
-         WHERE r.kind = ? ORDER BY r.rating DESC, r.player_id LIMIT ? OFFSET ?`,
+        `SELECT r.player_id AS id, p.name, r.rating, r.rd, r.games, r.wins
+         FROM (SELECT kind, player_id FROM ratings WHERE kind = ? ORDER BY rating DESC, player_id LIMIT ? OFFSET ?) page
+         JOIN ratings r ON r.kind = page.kind AND r.player_id = page.player_id JOIN players p ON p.id = r.player_id
+         ORDER BY r.rating DESC, r.player_id`,
       ),
       boardCount: db.prepare<[string], { n: number }>('SELECT count(*) AS n FROM ratings WHERE kind = ?'),
       ratingsOf: db.prepare<[number], { kind: string } & BoardRow>(
         'SELECT kind, player_id AS id, \'\' AS name, rating, rd, games, wins FROM ratings WHERE player_id = ? ORDER BY kind',
       ),
-      records: db.prepare<[string, number, number], RecordEntry>(`SELECT ${RECORD_COLUMNS} WHERE rec.kind = ? ORDER BY rec.better DESC, rec.id LIMIT ? OFFSET ?`),
+      // Likewise: the page's ids from the covering index records_board, then their rows.
+      records: db.prepare<[string, number, number], RecordEntry>(
+        `SELECT ${RECORD_COLUMNS} WHERE rec.id IN (SELECT id FROM records WHERE kind = ? ORDER BY better DESC, id LIMIT ? OFFSET ?)
+         ORDER BY rec.better DESC, rec.id`,
+      ),
       recordsOf: db.prepare<[number], RecordEntry>(`SELECT ${RECORD_COLUMNS} WHERE rec.player_id = ? ORDER BY rec.kind, rec.better DESC, rec.id`),
       matchesAll: db.prepare<[number, number], MatchRow>(`SELECT ${MATCH_COLUMNS} ORDER BY m.id DESC LIMIT ? OFFSET ?`),
       matchesKind: db.prepare<[string, number, number], MatchRow>(`SELECT ${MATCH_COLUMNS} WHERE m.kind = ? ORDER BY m.id DESC LIMIT ? OFFSET ?`),
-      matchesPlayer: db.prepare<[number, number, string | null, string | null, number, number], MatchRow>(
-        `SELECT ${MATCH_COLUMNS} WHERE m.id IN (SELECT id FROM matches WHERE player1 = ? UNION ALL SELECT id FROM matches WHERE player2 = ?)
-         AND (? IS NULL OR m.kind = ?) ORDER BY m.id DESC LIMIT ? OFFSET ?`,
+      // The page's ids by a merge of matches_player1 and matches_player2, both walked newest first,
+      // which stops once the page is full: a player's thousands of matches are not all read.
+      matchesPlayer: db.prepare<[{ player: number; kind: string | null; limit: number; offset: number }], MatchRow>(
+        `SELECT ${MATCH_COLUMNS} WHERE m.id IN (
+           SELECT id FROM matches WHERE player1 = @player AND (@kind IS NULL OR kind = @kind)
+           UNION SELECT id FROM matches WHERE player2 = @player AND (@kind IS NULL OR kind = @kind)
+           ORDER BY id DESC LIMIT @limit OFFSET @offset)
+         ORDER BY m.id DESC`,
       ),
       match: db.prepare<[number], MatchRow & { start: string | null }>(`SELECT ${MATCH_COLUMNS.replace('m.id,', 'm.id, m.start,')} WHERE m.id = ?`),
       insertPractice: db.prepare<[number, string, number, string, number, number]>(
@@ -190,6 +204,11 @@ export class Store {
   createPlayer(name: string, tokenHash: Buffer): PlayerRow {
     const info = this.s.insertPlayer.run(name, tokenHash, this.now());
     return { id: Number(info.lastInsertRowid), name };
+  }
+
+  /** A player's new name; throws on a name taken meanwhile (the UNIQUE constraint). */
+  renamePlayer(id: number, name: string): void {
+    this.s.renamePlayer.run(name, id);
   }
 
   createRoom(r: NewRoom): void {
@@ -286,7 +305,7 @@ export class Store {
 
   /** Matches newest first, of a player and of a kind when given. */
   matches(filter: { player?: number; kind?: string }, limit: number, offset: number): MatchRow[] {
-    if (filter.player !== undefined) return this.s.matchesPlayer.all(filter.player, filter.player, filter.kind ?? null, filter.kind ?? null, limit, offset);
+    if (filter.player !== undefined) return this.s.matchesPlayer.all({ player: filter.player, kind: filter.kind ?? null, limit, offset });
     if (filter.kind !== undefined) return this.s.matchesKind.all(filter.kind, limit, offset);
     return this.s.matchesAll.all(limit, offset);
   }

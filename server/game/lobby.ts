@@ -62,6 +62,22 @@ export class Lobby {
     return this.droppedAt.get(playerId) ?? this.startedAt;
   }
 
+  /** Who is connected, by name (the first hundred). */
+  online(): PlayerRef[] {
+    const out: PlayerRef[] = [];
+    for (const conn of this.sockets.values()) {
+      const p = this.players.get(conn.values().next().value as ConnId);
+      if (p) out.push(p);
+      if (out.length >= 100) break;
+    }
+    return out;
+  }
+
+  /** Renames a connected player on all their sockets. */
+  rename(player: PlayerRef): void {
+    for (const conn of this.sockets.get(player.id) ?? []) this.players.set(conn, player);
+  }
+
   /** The public rooms not yet over, oldest first. */
   listing(): LobbyRoom[] {
     const out: LobbyRoom[] = [];

@@ -13,6 +13,7 @@ export interface RoomState {
   readonly raceTo: number;
   readonly private: boolean;
   readonly shotClock: number;
+  readonly guidance: 'none' | 'contact' | 'path';
   readonly createdBy: string;
   readonly seats: readonly PlayerRef[];
   readonly status: RoomStatus;
@@ -99,6 +100,7 @@ export function roomView(room: Room, seat: (p: PlayerRef) => { connected: boolea
     raceTo: s.raceTo,
     private: s.private,
     shotClock: s.shotClock,
+    guidance: s.guidance ?? 'contact',
     players: s.seats.map((p) => ({ id: p.id, name: p.name, ...seat(p) })),
     spectators: room.spectators.size,
     status: s.status === 'closed' ? 'over' : s.status,

@@ -88,7 +88,10 @@ export class GameService {
     }
     this.watching.delete(conn);
     const gone = this.lobby.detach(conn, this.now());
-    if (gone) for (const room of this.roomsOf(gone.id)) this.broadcastRoom(room);
+    if (gone) {
+      for (const room of this.roomsOf(gone.id)) this.broadcastRoom(room);
+      this.lobbyChanged = true;
+    }
     return this.flush();
   }
 
@@ -132,10 +135,12 @@ export class GameService {
     switch (msg.type) {
       case 'lobby':
         this.lobby.subscribers.add(conn);
-        this.send([conn], { type: 'lobby', ...re(msg.id), rooms: this.lobby.listing() });
+        this.send([conn], { type: 'lobby', ...re(msg.id), rooms: this.lobby.listing(), online: this.lobby.online() });
         return;
       case 'create':
         return this.create(conn, player, msg);
+      case 'rename':
+        return this.rename(conn, player, msg);
       case 'join':
         return this.join(conn, player, msg);
       case 'watch':
@@ -190,12 +195,31 @@ export class GameService {
       player = { id: String(row.id), name: row.name };
     }
     const back = this.lobby.attach(conn, player);
+    if (back) this.lobbyChanged = true;
     this.send([conn], { type: 'welcome', ...re(msg.id), player, token });
     for (const room of this.roomsOf(player.id)) {
       room.holdsOver.delete(player.id);
       if (back) this.broadcastRoom(room);
       else this.send([conn], { type: 'room', room: this.view(room) });
     }
+  }
+
+  /** A new name for the player: unique without regard to case, shown in every room they sit in. */
+  private rename(conn: ConnId, player: PlayerRef, msg: Msg<'rename'>): void {
+    if (msg.name.toLowerCase() !== player.name.toLowerCase() && this.store.nameTaken(msg.name)) throw new ServiceError('name-taken', `the name "${msg.name}" is taken`);
+    this.store.renamePlayer(Number(player.id), msg.name);
+    const renamed = { id: player.id, name: msg.name };
+    this.lobby.rename(renamed);
+    for (const room of this.roomsOf(player.id)) {
+      const next = { ...room.state, seats: room.state.seats.map((p) => (p.id === player.id ? renamed : p)) };
+      this.store.saveChanges(this.change(next));
+      room.state = next;
+      this.broadcastRoom(room);
+    }
+    const others = this.lobby.socketsOf(player.id).filter((c) => c !== conn);
+    this.send(others, { type: 'player', player: renamed });
+    this.send([conn], { type: 'player', ...re(msg.id), player: renamed });
+    this.lobbyChanged = true;
   }
 
   private madeUpName(): string {
@@ -217,6 +241,7 @@ export class GameService {
       raceTo: msg.raceTo ?? DEFAULT_RACE[msg.kind],
       private: msg.private ?? false,
       shotClock: msg.shotClock ?? 0,
+      guidance: msg.guidance ?? 'contact',
       createdBy: player.id,
       seats: [player],
       status: 'waiting',
@@ -272,6 +297,12 @@ export class GameService {
 
   private watch(conn: ConnId, msg: Msg<'watch'>): void {
     const room = this.room(msg.room);
+    const player = this.lobby.playerOf(conn);
+    if (player && this.seated(room, player.id)) {
+      // A player's own room: its state, without counting them as a spectator.
+      this.send([conn], { type: 'room', ...re(msg.id), room: this.view(room) });
+      return;
+    }
     room.spectators.add(conn);
     let set = this.watching.get(conn);
     if (!set) this.watching.set(conn, (set = new Set()));
@@ -515,7 +546,7 @@ export class GameService {
   private flush(): Delivery[] {
     if (this.lobbyChanged) {
       this.lobbyChanged = false;
-      if (this.lobby.subscribers.size > 0) this.send([...this.lobby.subscribers], { type: 'lobby', rooms: this.lobby.listing() });
+      if (this.lobby.subscribers.size > 0) this.send([...this.lobby.subscribers], { type: 'lobby', rooms: this.lobby.listing(), online: this.lobby.online() });
     }
     const out = this.out;
     this.out = [];

@@ -14,6 +14,8 @@ const BallId = v.pipe(v.string(), v.minLength(1), v.maxLength(16));
 
 export const GAME_KINDS = ['nineball', 'eightball', 'snooker', 'threecushion'] as const;
 export const GameKindSchema = v.picklist(GAME_KINDS);
+/** Guidance a room allows: none, the aim to first contact, or the cue ball's whole predicted path. */
+export const GUIDANCE = ['none', 'contact', 'path'] as const;
 
 /** Plain text: no control characters (markup is harmless, as clients never render text as HTML). */
 const plainText = (max: number) =>
@@ -53,7 +55,10 @@ export const CreateSchema = v.object({
   raceTo: v.optional(v.pipe(v.number(), v.integer(), v.minValue(1), v.maxValue(RACE_MAX))),
   private: v.optional(v.boolean()),
   shotClock: v.optional(v.pipe(v.number(), v.finite(), v.minValue(0), v.maxValue(SHOT_CLOCK_MAX_S))),
+  /** How much the players' pages may show of a shot before it is played (default 'contact'). */
+  guidance: v.optional(v.picklist(GUIDANCE)),
 });
+export const RenameSchema = v.object({ type: v.literal('rename'), id: RequestId, name: plainText(NAME_MAX) });
 const roomCommand = <T extends string>(type: T) => v.object({ type: v.literal(type), id: RequestId, room: RoomId });
 export const JoinSchema = roomCommand('join');
 export const WatchSchema = roomCommand('watch');
@@ -81,6 +86,7 @@ export const ChatSchema = v.object({ type: v.literal('chat'), id: RequestId, roo
 
 export const ClientMessageSchema = v.variant('type', [
   HelloSchema,
+  RenameSchema,
   LobbySchema,
   CreateSchema,
   JoinSchema,

@@ -23,6 +23,8 @@ export interface RoomView {
   readonly private: boolean;
   /** Seconds per shot, 0 for none. */
   readonly shotClock: number;
+  /** How much the players' pages show before a shot: 'none', 'contact' or 'path'. */
+  readonly guidance: 'none' | 'contact' | 'path';
   readonly players: readonly SeatView[];
   /** Number of spectators. */
   readonly spectators: number;
@@ -62,7 +64,9 @@ export interface OutcomeView {
 
 export type ServerMessage =
   | { readonly type: 'welcome'; readonly re?: string | number; readonly player: PlayerRef; readonly token: string }
-  | { readonly type: 'lobby'; readonly re?: string | number; readonly rooms: readonly LobbyRoom[] }
+  /** The player's own name changed (a rename, on every socket of theirs). */
+  | { readonly type: 'player'; readonly re?: string | number; readonly player: PlayerRef }
+  | { readonly type: 'lobby'; readonly re?: string | number; readonly rooms: readonly LobbyRoom[]; readonly online: readonly PlayerRef[] }
   | { readonly type: 'room'; readonly re?: string | number; readonly room: RoomView }
   | {
       readonly type: 'shot';

@@ -5,7 +5,7 @@ import { afterMove, gameFor, OVER_KEEP_MS, type RoomState } from '../../../serve
 import { concede, EMPTY_TALLY } from '../../../shared/rules/index.ts';
 
 const base: RoomState = {
-  id: 'r1', kind: 'snooker', raceTo: 2, private: false, shotClock: 20, createdBy: 'a',
+  id: 'r1', kind: 'snooker', raceTo: 2, private: false, shotClock: 20, guidance: 'contact', createdBy: 'a',
   seats: [{ id: 'a', name: 'Ann' }, { id: 'b', name: 'Bob' }], status: 'playing', stateId: 1, game: null,
   matchId: 7, order: ['a', 'b'], seed: 42, frame: 0, frames: {}, deadline: null, rematch: [], winner: null, how: null, left: [], closesAt: null, tally: EMPTY_TALLY,
 };

@@ -1,0 +1,91 @@
+// The lobby: the rooms as they change, a form to open a table, who is online, and your name.
+import type { LobbyRoom, ServerMessage } from '../../shared/protocol/index.ts';
+import { h, KIND_NAMES, link } from '../dom.ts';
+import type { PageContext } from '../main.ts';
+
+export function mountLobby(root: HTMLElement, ctx: PageContext): () => void {
+  const { session } = ctx;
+  const rooms = h('ul', { className: 'rooms', 'aria-label': 'Rooms' });
+  const online = h('p', { className: 'online', 'aria-label': 'Online' });
+  const note = h('p', { role: 'status', className: 'note' });
+  const kind = h('select', { name: 'kind', 'aria-label': 'Game' }, ...Object.entries(KIND_NAMES).map(([v, t]) => h('option', { value: v }, t)));
+  const race = h('input', { name: 'raceTo', type: 'number', min: 1, max: 50, value: 1, 'aria-label': 'Race to' });
+  const clock = h('input', { name: 'shotClock', type: 'number', min: 0, max: 600, value: 0, 'aria-label': 'Shot clock (s)' });
+  const priv = h('input', { name: 'private', type: 'checkbox', 'aria-label': 'Private' });
+  const guidance = h(
+    'select',
+    { name: 'guidance', 'aria-label': 'Guidance' },
+    h('option', { value: 'contact' }, 'Aim to first contact'),
+    h('option', { value: 'path' }, 'Full cue-ball path'),
+    h('option', { value: 'none' }, 'No guidance'),
+  );
+  kind.addEventListener('change', () => {
+    race.value = kind.value === 'threecushion' ? '15' : '1';
+  });
+  const create = h(
+    'form',
+    { className: 'create', 'aria-label': 'New table' },
+    h('label', {}, 'Game ', kind),
+    h('label', {}, 'Race to ', race),
+    h('label', {}, 'Shot clock (s) ', clock),
+    h('label', {}, 'Guidance ', guidance),
+    h('label', {}, priv, ' Private'),
+    h('button', { type: 'submit' }, 'Create table'),
+  );
+  create.addEventListener('submit', (e) => {
+    e.preventDefault();
+    void session
+      .request({ type: 'create', kind: kind.value as LobbyRoom['kind'], raceTo: Number(race.value), shotClock: Number(clock.value), private: priv.checked, guidance: guidance.value as 'contact' })
+      .then((m) => {
+        if (m.type === 'room') ctx.navigate(`/room/${m.room.id}`);
+        else if (m.type === 'error') note.textContent = m.message;
+      }, (err: Error) => (note.textContent = err.message));
+  });
+  const name = h('input', { name: 'name', maxlength: 32, 'aria-label': 'Your name' });
+  const rename = h('form', { className: 'rename', 'aria-label': 'Your name' }, h('label', {}, 'Your name ', name), h('button', { type: 'submit' }, 'Change name'));
+  rename.addEventListener('submit', (e) => {
+    e.preventDefault();
+    void session.request({ type: 'rename', name: name.value }).then((m) => {
+      note.textContent = m.type === 'error' ? m.message : `You are ${name.value}`;
+    });
+  });
+
+  root.append(
+    h('section', { 'aria-label': 'Lobby' }, h('h2', {}, 'Lobby'), rooms, note),
+    h('section', { 'aria-label': 'Open a table' }, h('h2', {}, 'Open a table'), create),
+    h('section', { 'aria-label': 'Players' }, h('h2', {}, 'Online'), online, rename, h('p', {}, link('/practice', 'Practise alone'), ' · ', link('/leaderboard', 'Leaderboard'))),
+  );
+
+  const render = (list: readonly LobbyRoom[]) => {
+    rooms.replaceChildren(
+      ...(list.length === 0 ? [h('li', { className: 'empty' }, 'No tables yet: open one.')] : []),
+      ...list.map((r) => {
+        const invite = `${location.origin}/room/${r.id}`;
+        return h(
+          'li',
+          { 'data-room': r.id },
+          h('span', { className: 'kind' }, KIND_NAMES[r.kind] ?? r.kind),
+          ` race to ${r.raceTo} · `,
+          r.players.map((p) => p.name).join(' v ') || 'empty',
+          ` · ${r.status}${r.spectators ? ` · ${r.spectators} watching` : ''} `,
+          r.status === 'waiting' ? h('a', { href: `/room/${r.id}`, 'data-link': true, className: 'button' }, 'Join') : h('a', { href: `/room/${r.id}`, 'data-link': true, className: 'button' }, 'Watch'),
+          h('button', { type: 'button', onclick: () => void navigator.clipboard?.writeText(invite).then(() => (note.textContent = `Invite link copied: ${invite}`)) }, 'Copy invite link'),
+        );
+      }),
+    );
+  };
+  const stop = session.onMessage((m: ServerMessage) => {
+    if (m.type === 'lobby') {
+      render(m.rooms);
+      const who = m.online ?? [];
+      online.textContent = who.length === 0 ? 'Nobody else yet.' : who.map((p) => p.name).join(', ');
+    }
+    if ((m.type === 'welcome' || m.type === 'player') && document.activeElement !== name) name.value = m.player.name;
+  });
+  if (session.player && document.activeElement !== name) name.value = session.player.name;
+  session.keep('lobby', { type: 'lobby' });
+  return () => {
+    stop();
+    session.forget('lobby');
+  };
+}

@@ -1,0 +1,100 @@
+// A match replayed in the browser from its record (GET /api/matches/:id) with the shared rules and
+// physics: a shot list with share links, play and pause, speed. Each shot's hash is checked
+// against the one the server broadcast.
+import { replayMatch, playShot, type Game, type MatchAction, type MatchRecord } from '../../shared/rules/index.ts';
+import { h, KIND_NAMES } from '../dom.ts';
+import { api } from '../net/api.ts';
+import { Animator } from '../table/animator.ts';
+import { TableView } from '../table/view.ts';
+
+interface MatchBody extends MatchRecord {
+  kind: string;
+  players: { id: string; name: string }[];
+  result: { winner: string; reason: string } | null;
+}
+
+export function mountMatch(root: HTMLElement, _ctx: unknown, id: string): () => void {
+  const section = h('section', { 'aria-label': 'Replay' }, h('h2', {}, `Match ${id}`));
+  const info = h('p', { role: 'status' });
+  root.append(section);
+  let live = true;
+  let animator: Animator | null = null;
+  let view: TableView | null = null;
+  api<MatchBody>(`/api/matches/${encodeURIComponent(id)}`).then(
+    (m) => {
+      if (!live) return;
+      const names = (s: string) => m.players.reduce((t, p) => t.replace(new RegExp(`\\b${p.id}\\b`, 'g'), p.name), s);
+      let replayed;
+      try {
+        replayed = replayMatch(m);
+      } catch (err) {
+        info.textContent = `The record does not replay: ${(err as Error).message}`;
+        section.append(info);
+        return;
+      }
+      const bad = replayed.shots.filter((s) => s.recorded !== undefined && s.recorded !== s.hash).length;
+      const tableBox = h('div', { className: 'table-box' });
+      const speed = h('select', { 'aria-label': 'Speed' }, ...['0.5', '1', '2', '4'].map((v) => h('option', { value: v, selected: v === '1' }, `${v}×`)));
+      const play = h('button', { type: 'button' }, 'Play');
+      const list = h('ol', { className: 'shots', 'aria-label': 'Shots' });
+      section.replaceChildren(
+        h('h2', {}, `${KIND_NAMES[m.kind] ?? m.kind}: ${m.players.map((p) => p.name).join(' v ')}`),
+        h('p', {}, m.result ? `${names(m.result.winner)} won (${m.result.reason}).` : 'In play.', ` ${replayed.shots.length} shots; ${bad === 0 ? 'every hash matches the server\'s' : `${bad} hashes differ from the server's`}.`),
+        tableBox,
+        h('p', {}, play, ' ', h('label', {}, 'Speed ', speed)),
+        info,
+        list,
+      );
+      view = new TableView(tableBox, m.start.table, 'Replay table');
+      animator = new Animator(view);
+      const before: Game[] = [m.start, ...replayed.games];
+      view.draw(m.start.balls);
+      let current = 0;
+      let playing = false;
+      const shotIndexes = m.actions.map((a, i) => (a.type === 'shot' ? i : -1)).filter((i) => i >= 0);
+      const show = async (k: number) => {
+        const i = shotIndexes[k]!;
+        const a = m.actions[i] as Extract<MatchAction, { type: 'shot' }>;
+        const played = playShot(before[i]!, { ...a.shot, player: a.player } as never, a.cueBall);
+        view!.canvas.dataset.outcomeHash = played.outcome.hash;
+        info.textContent = `Shot ${k + 1}: ${names(played.game.verdict?.message ?? '')}`;
+        await animator!.play(played.outcome, Number(speed.value));
+      };
+      const run = async () => {
+        playing = true;
+        play.textContent = 'Pause';
+        while (playing && current < shotIndexes.length && live) await show(current++);
+        playing = false;
+        play.textContent = 'Play';
+      };
+      play.addEventListener('click', () => {
+        if (playing) {
+          playing = false;
+          animator?.stop();
+        } else void run();
+      });
+      list.append(
+        ...shotIndexes.map((i, k) => {
+          const a = m.actions[i] as Extract<MatchAction, { type: 'shot' }>;
+          return h('li', {}, h('a', { href: `/match/${id}#shot=${k + 1}`, onclick: (e: Event) => {
+            e.preventDefault();
+            history.replaceState(null, '', `/match/${id}#shot=${k + 1}`);
+            current = k;
+            void show(current++);
+          } }, `${names(a.player)}: ${a.shot.speed.toFixed(1)} m/s`));
+        }),
+      );
+      const linked = /#shot=(\d+)/.exec(location.hash);
+      if (linked) {
+        current = Math.max(0, Math.min(shotIndexes.length - 1, Number(linked[1]) - 1));
+        void show(current++);
+      }
+    },
+    (err: Error) => section.append(h('p', { role: 'status' }, err.message)),
+  );
+  return () => {
+    live = false;
+    animator?.stop();
+    view?.destroy();
+  };
+}

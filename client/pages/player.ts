@@ -1,0 +1,36 @@
+// A player's page: ratings per game, best records, recent matches.
+import { h, KIND_NAMES, link } from '../dom.ts';
+import { api } from '../net/api.ts';
+
+interface PlayerPage {
+  name: string;
+  games: number;
+  wins: number;
+  ratings: Record<string, { rating: number; rd: number; games: number; wins: number; provisional: boolean }>;
+  records: { kind: string; what: string; value: number; match?: number }[];
+  recent: { id: number; kind: string; players: { id: string; name: string }[]; status: string; result: { winner: string } | null }[];
+}
+
+export function mountPlayer(root: HTMLElement, _ctx: unknown, id: string): () => void {
+  const section = h('section', { 'aria-label': 'Player' }, h('h2', {}, 'Player'));
+  root.append(section);
+  let live = true;
+  api<PlayerPage>(`/api/players/${encodeURIComponent(id)}`).then(
+    (p) => {
+      if (!live) return;
+      section.replaceChildren(
+        h('h2', {}, p.name),
+        h('p', {}, `${p.games} rated games, ${p.wins} won.`),
+        h('ul', { 'aria-label': 'Ratings' }, ...Object.entries(p.ratings).map(([k, r]) => h('li', {}, `${KIND_NAMES[k] ?? k}: ${Math.round(r.rating)}${r.provisional ? '?' : ''} (RD ${Math.round(r.rd)}), ${r.games} games, ${r.wins} won`))),
+        h('h3', {}, 'Records'),
+        h('ul', { 'aria-label': 'Records' }, ...p.records.map((r) => h('li', {}, `${KIND_NAMES[r.kind] ?? r.kind}: ${r.what} ${r.value}`, r.match ? h('span', {}, ' · ', link(`/match/${r.match}`, 'replay')) : ''))),
+        h('h3', {}, 'Recent matches'),
+        h('ul', { 'aria-label': 'Recent matches' }, ...p.recent.map((m) => h('li', {}, link(`/match/${m.id}`, `${KIND_NAMES[m.kind] ?? m.kind}: ${m.players.map((x) => x.name).join(' v ')}`), m.result ? ` · won by ${m.players.find((x) => x.id === m.result!.winner)?.name ?? ''}` : ` · ${m.status}`))),
+      );
+    },
+    (err: Error) => section.append(h('p', { role: 'status' }, err.message)),
+  );
+  return () => {
+    live = false;
+  };
+}

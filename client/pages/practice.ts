@@ -1,0 +1,192 @@
+// Practice, all in the browser (it plays with the network off once loaded): free practice on any
+// game's layout with free placement and undo, and verified runs (snooker break building, a
+// nine-ball run-out from the break, a three-cushion run) whose shots the server replays to score.
+import {
+  cueBallId,
+  newGame,
+  placeBall,
+  playShot,
+  PRACTICE_OPPONENT,
+  undo,
+  type Game,
+  type PracticeKind,
+  type PracticeLayout,
+  type PracticeShot,
+} from '../../shared/rules/index.ts';
+import type { Outcome } from '../../shared/physics/index.ts';
+import { h, KIND_NAMES } from '../dom.ts';
+import type { PageContext } from '../main.ts';
+import { api } from '../net/api.ts';
+import { storedToken } from '../net/session.ts';
+import { Aim } from '../table/aim.ts';
+import { Animator } from '../table/animator.ts';
+import { spaceShoots, strokeControls } from '../table/controls.ts';
+import { TableView } from '../table/view.ts';
+
+const ME = 'me';
+
+export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
+  const mode = h('select', { 'aria-label': 'Practice' }, h('option', { value: 'free' }, 'Free practice'), h('option', { value: 'run' }, 'Verified run'));
+  const layout = h('select', { 'aria-label': 'Layout' }, ...['nineball', 'eightball', 'snooker', 'threecushion', 'empty'].map((l) => h('option', { value: l }, KIND_NAMES[l] ?? 'Empty table')));
+  const runKind = h('select', { 'aria-label': 'Run' }, ...(['snooker', 'nineball', 'threecushion'] as const).map((k) => h('option', { value: k }, KIND_NAMES[k])));
+  const placing = h('input', { type: 'checkbox', 'aria-label': 'Place balls' });
+  const info = h('p', { role: 'status', className: 'verdict' });
+  const tableBox = h('div', { className: 'table-box' });
+  const undoButton = h('button', { type: 'button', onclick: () => doUndo() }, 'Undo');
+  const replayButton = h('button', { type: 'button', onclick: () => last && void animator.play(last) }, 'Replay');
+  const submit = h('button', { type: 'button', onclick: () => void send() }, 'Submit run');
+  const start = h('button', { type: 'button', onclick: () => reset() }, 'New table');
+  root.append(
+    h(
+      'section',
+      { className: 'practice', 'aria-label': 'Practice' },
+      h('h2', {}, 'Practice'),
+      h('p', {}, mode, ' ', layout, ' ', runKind, ' ', start, ' ', h('label', {}, placing, ' Place balls')),
+      tableBox,
+      h('p', {}, undoButton, ' ', replayButton, ' ', submit),
+      info,
+    ),
+  );
+
+  let view: TableView | null = null;
+  let aim: Aim | null = null;
+  let animator!: Animator;
+  let controls: ReturnType<typeof strokeControls> | null = null;
+  let game: Game;
+  let last: Outcome | null = null;
+  let busy = false;
+  let run: { kind: PracticeKind; seed: number; shots: PracticeShot[]; score: number } | null = null;
+
+  const setup = (g: Game) => {
+    game = g;
+    if (!view || view.spec.name !== g.table) {
+      view?.destroy();
+      controls?.element.remove();
+      view = new TableView(tableBox, g.table, 'Practice table');
+      aim = new Aim(view, 'path');
+      view.setOverlay((c) => aim?.draw(c));
+      animator = new Animator(view);
+      controls = strokeControls(aim, shoot);
+      tableBox.after(controls.element);
+      view.canvas.addEventListener('pointerdown', placeDown);
+      view.canvas.addEventListener('pointerup', placeUp);
+    }
+    refresh();
+  };
+
+  const refresh = () => {
+    const active = !busy && !placing.checked && game.winner === null && game.turn === ME;
+    aim!.set(game, cueBallId(game), active, 'path', () => {
+      controls?.sync();
+      if (!animator.playing) view!.draw(aim!.balls());
+    });
+    controls!.enable(active);
+    view!.draw(aim!.balls());
+    layout.hidden = mode.value !== 'free';
+    runKind.hidden = mode.value !== 'run';
+    submit.hidden = mode.value !== 'run';
+    undoButton.hidden = mode.value !== 'free';
+    submit.disabled = !run || run.shots.length === 0;
+  };
+
+  function reset(): void {
+    last = null;
+    if (mode.value === 'free') {
+      run = null;
+      setup(newGame('practice', [ME], { layout: layout.value as PracticeLayout }));
+      info.textContent = 'Free practice: aim with the mouse or the arrow keys, Space or Shoot to play.';
+    } else {
+      const seed = Math.floor(Math.random() * 0xffffffff);
+      const kind = runKind.value as PracticeKind;
+      run = { kind, seed, shots: [], score: 0 };
+      setup(newGame(kind, [ME, PRACTICE_OPPONENT], { seed, raceTo: 1 }));
+      info.textContent = `Verified run: play while you stay at the table, then submit. Score 0.`;
+    }
+  }
+
+  function shoot(): void {
+    if (busy || placing.checked || game.winner !== null || game.turn !== ME || !aim) return;
+    const s = aim.state;
+    const shot = { ball: cueBallId(game), heading: s.heading, speed: s.speed, side: s.side, top: s.top };
+    let played;
+    try {
+      played = playShot(game, { ...shot, player: ME }, s.cueBall);
+    } catch (err) {
+      info.textContent = (err as Error).message;
+      return;
+    }
+    view!.canvas.dataset.outcomeHash = played.outcome.hash;
+    last = played.outcome;
+    busy = true;
+    refresh();
+    const v = played.game.verdict!;
+    if (run) {
+      run.shots.push({ shot, ...(s.cueBall ? { cueBall: s.cueBall } : {}) });
+      if (!v.foul) run.score += run.kind === 'nineball' ? v.potted.length : (v.points[ME] ?? 0);
+    }
+    void animator.play(played.outcome).then(() => {
+      busy = false;
+      game = played.game;
+      const over = run && (game.turn !== ME || game.winner !== null);
+      info.textContent = `${v.message.replaceAll(PRACTICE_OPPONENT, 'the table').replace(/\bme\b/g, 'you')}${run ? ` Score ${run.score}.${over ? ' The run is over: submit it.' : ''}` : ''}`;
+      refresh();
+    });
+  }
+
+  function doUndo(): void {
+    try {
+      setup(undo(game));
+    } catch (err) {
+      info.textContent = (err as Error).message;
+    }
+  }
+
+  let picked: string | null = null;
+  function placeDown(e: PointerEvent): void {
+    if (!placing.checked || mode.value !== 'free' || !view) return;
+    const w = view.toWorld(e.clientX, e.clientY);
+    const near = game.balls.find((b) => Math.hypot(b.x - w.x, b.y - w.y) < view!.spec.ballRadius * 1.5);
+    picked = near?.id ?? null;
+  }
+  function placeUp(e: PointerEvent): void {
+    if (!picked || !view) return;
+    const w = view.toWorld(e.clientX, e.clientY);
+    try {
+      setup(placeBall(game, ME, { id: picked, x: w.x, y: w.y }));
+    } catch (err) {
+      info.textContent = (err as Error).message;
+    }
+    picked = null;
+  }
+
+  async function send(): Promise<void> {
+    const token = storedToken();
+    if (!run || !token) {
+      info.textContent = 'Connect once to the server to submit runs.';
+      return;
+    }
+    try {
+      const r = await api<{ id: number; score: number }>('/api/practice', {
+        method: 'POST',
+        headers: { 'content-type': 'application/json' },
+        body: JSON.stringify({ token, kind: run.kind, seed: run.seed, shots: run.shots }),
+      });
+      info.textContent = `The server replayed your run: score ${r.score} (run ${r.id}).`;
+    } catch (err) {
+      info.textContent = `Not submitted: ${(err as Error).message}`;
+    }
+  }
+
+  mode.addEventListener('change', reset);
+  layout.addEventListener('change', reset);
+  runKind.addEventListener('change', reset);
+  placing.addEventListener('change', () => refresh());
+  const stopSpace = spaceShoots(shoot);
+  reset();
+  void ctx;
+  return () => {
+    stopSpace();
+    animator?.stop();
+    view?.destroy();
+  };
+}

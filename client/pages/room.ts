@@ -1,0 +1,259 @@
+// A room: the table, the players and scores, the shot clock, the referee's words, the rules'
+// declarations and choices, chat. A shot is simulated here the instant it is struck (the
+// shooter's page) or the instant it is broadcast (every other page), from the same state and with
+// the same physics the server ran; each page compares its hash with the server's.
+import { simulate } from '../../shared/physics/index.ts';
+import type { RoomView, ServerMessage } from '../../shared/protocol/index.ts';
+import { cueBallId, legalTargets, placeCueBall, playShot, POCKETS, sceneOf, strikeOf, type Game, type Shot } from '../../shared/rules/index.ts';
+import { h, KIND_NAMES } from '../dom.ts';
+import type { PageContext } from '../main.ts';
+import { Aim, type Guidance } from '../table/aim.ts';
+import { Animator } from '../table/animator.ts';
+import { spaceShoots, strokeControls } from '../table/controls.ts';
+import { TableView } from '../table/view.ts';
+
+/** Hash mismatches with the server on this page (there should be none). */
+const stats = { mismatches: 0 };
+(globalThis as { baizeMismatches?: typeof stats }).baizeMismatches = stats;
+
+type ShotMessage = Extract<ServerMessage, { type: 'shot' }>;
+
+export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () => void {
+  const { session } = ctx;
+  let room: RoomView | null = null;
+  let view: TableView | null = null;
+  let aim: Aim | null = null;
+  let animator: Animator | null = null;
+  /** The game and stateId this page shows (the server's, or its own prediction of it). */
+  let game: Game | null = null;
+  let stateId = -1;
+  let busy = false;
+  const queue: ShotMessage[] = [];
+
+  const title = h('h2', {}, 'Room');
+  const players = h('ol', { className: 'players', 'aria-label': 'Players' });
+  const clock = h('p', { className: 'clock', role: 'timer', 'aria-label': 'Shot clock' });
+  const verdict = h('p', { className: 'verdict', role: 'status', 'aria-label': 'Referee' });
+  const tableBox = h('div', { className: 'table-box' });
+  const actions = h('div', { className: 'actions' });
+  const declarations = h('div', { className: 'declarations' });
+  const chatLog = h('ul', { className: 'chat', 'aria-label': 'Chat' });
+  const chatText = h('input', { maxlength: 200, 'aria-label': 'Message' });
+  const chat = h('form', { className: 'chat-form' }, chatText, h('button', { type: 'submit' }, 'Send'));
+  const banner = h('p', { className: 'banner', role: 'status' });
+  chat.addEventListener('submit', (e) => {
+    e.preventDefault();
+    if (chatText.value.trim()) session.send({ type: 'chat', room: id, text: chatText.value });
+    chatText.value = '';
+  });
+  root.append(h('section', { className: 'room', 'aria-label': 'Room' }, title, banner, players, clock, tableBox, declarations, actions, verdict, chatLog, chat));
+
+  const me = () => session.player?.id;
+  const seated = () => !!room?.players.some((p) => p.id === me());
+  const myTurn = () => !!game && room?.status === 'playing' && game.winner === null && game.turn === me() && seated() && !busy;
+  const nameOf = (pid: string) => room?.players.find((p) => p.id === pid)?.name ?? pid;
+  const words = (text: string) => text.replace(/\b(\d+|practice-opponent)\b/g, (m) => (room?.players.some((p) => p.id === m) ? nameOf(m) : m));
+
+  let controls: ReturnType<typeof strokeControls> | null = null;
+  const redraw = () => {
+    if (!view || !aim || animator?.playing) return;
+    view.draw(aim.balls());
+  };
+
+  const ensureTable = (g: Game) => {
+    if (view && view.spec.name === g.table) return;
+    view?.destroy();
+    view = new TableView(tableBox, g.table, `${KIND_NAMES[room?.kind ?? ''] ?? ''} table`);
+    aim = new Aim(view, guidanceOf(room));
+    view.setOverlay((c) => aim?.draw(c));
+    animator = new Animator(view);
+    controls?.element.remove();
+    controls = strokeControls(aim, shoot);
+    tableBox.after(controls.element);
+  };
+
+  const render = () => {
+    if (!room) return;
+    // A room message that came while a shot played (a new frame, a placement) applies now.
+    if (!busy && queue.length === 0 && room.stateId > stateId) {
+      game = room.game;
+      stateId = room.stateId;
+    }
+    title.textContent = `${KIND_NAMES[room.kind] ?? room.kind}, race to ${room.raceTo}${room.private ? ' (private)' : ''}`;
+    const g = game;
+    players.replaceChildren(
+      ...room.players.map((p) =>
+        h(
+          'li',
+          { className: g?.turn === p.id && room?.status === 'playing' ? 'on-turn' : '' },
+          `${p.name}${p.id === me() ? ' (you)' : ''}: ${g ? (g.scores[p.id] ?? 0) : 0}`,
+          room?.frames ? ` (frames ${room.frames[p.id] ?? 0})` : '',
+          p.connected ? '' : ' · disconnected',
+        ),
+      ),
+    );
+    verdict.textContent = room.status === 'waiting' ? 'Waiting for an opponent.' : g?.verdict ? words(g.verdict.message) : `${nameOf(g?.turn ?? '')} to break.`;
+    if (room.status === 'over') verdict.textContent = `${room.winner ? nameOf(room.winner) : 'Nobody'} wins. ${g?.verdict ? words(g.verdict.message) : ''}`;
+    actions.replaceChildren();
+    if (room.status === 'waiting' && !seated()) actions.append(h('button', { type: 'button', onclick: () => void session.request({ type: 'join', room: id }) }, 'Join'));
+    if (room.status === 'playing' && seated()) actions.append(h('button', { type: 'button', onclick: () => session.send({ type: 'concede', room: id }) }, 'Concede'));
+    if (room.status === 'over' && seated()) actions.append(h('button', { type: 'button', onclick: () => session.send({ type: 'rematch', room: id }) }, room.rematch?.includes(me() ?? '') ? 'Rematch asked' : 'Rematch'));
+    if (room.status === 'playing' && room.players.some((p) => !p.connected && p.heldUntil !== undefined && p.heldUntil <= Date.now()) && seated())
+      actions.append(h('button', { type: 'button', onclick: () => session.send({ type: 'claim', room: id }) }, 'Claim the game'));
+    if (!seated()) actions.append(h('span', { className: 'note' }, `Watching · ${room.spectators} watching`));
+    renderDeclarations();
+    if (g) {
+      ensureTable(g);
+      aim!.set(g, cueBallId(g), myTurn(), guidanceOf(room), () => {
+        controls?.sync();
+        redraw();
+      });
+      controls!.enable(myTurn());
+      redraw();
+    }
+  };
+
+  const pushOut = h('input', { type: 'checkbox', 'aria-label': 'Push-out' });
+  const called = h('select', { 'aria-label': 'Called pocket' }, ...POCKETS.map((p) => h('option', { value: p }, p)));
+  const nominated = h('select', { 'aria-label': 'Nominated ball' });
+  const renderDeclarations = () => {
+    declarations.replaceChildren();
+    const g = game;
+    if (!g || !myTurn()) return;
+    if (g.kind === 'nineball' && g.phase === 'push-out') declarations.append(h('label', {}, pushOut, ' Push-out'));
+    if (g.kind === 'eightball' && g.groups !== null && legalTargets(g).includes('8')) declarations.append(h('label', {}, 'Called pocket for the 8 ', called));
+    if (g.kind === 'snooker' && (g.on === 'colour' || g.freeBall)) {
+      const options = g.freeBall ? g.balls.filter((b) => b.id !== 'cue').map((b) => b.id) : ['yellow', 'green', 'brown', 'blue', 'pink', 'black'];
+      nominated.replaceChildren(...options.filter((o) => g.balls.some((b) => b.id === o)).map((o) => h('option', { value: o }, o)));
+      declarations.append(h('label', {}, 'Nominate ', nominated));
+    }
+    for (const choice of g.choices) {
+      const label = choice === 'pass' ? 'Pass (opponent plays)' : choice === 'rerack' ? 'Re-rack and break' : 'Re-rack, they break again';
+      declarations.append(h('button', { type: 'button', onclick: () => session.send({ type: 'decide', room: id, stateId, choice }) }, label));
+    }
+  };
+
+  /** The shot as aimed, with this turn's declarations. */
+  const aimedShot = (g: Game): Omit<Shot, 'player'> => {
+    const s = aim!.state;
+    const shot: Omit<Shot, 'player'> = { ball: cueBallId(g), heading: s.heading, speed: s.speed, side: s.side, top: s.top };
+    if (g.kind === 'nineball' && g.phase === 'push-out' && pushOut.checked) shot.pushOut = true;
+    if (g.kind === 'eightball' && g.groups !== null && legalTargets(g).includes('8')) shot.calledPocket = called.value as Shot['calledPocket'];
+    if (g.kind === 'snooker' && (g.on === 'colour' || g.freeBall) && nominated.value) shot.nominated = nominated.value;
+    return shot;
+  };
+
+  /** This page's shot: simulated here at once and animated while the server confirms it. */
+  function shoot(): void {
+    if (!myTurn() || !game || !aim) return;
+    const g = game;
+    const shot = aimedShot(g);
+    const cueBall = aim.state.cueBall;
+    let played;
+    try {
+      played = playShot(g, { ...shot, player: me()! }, cueBall);
+    } catch (err) {
+      verdict.textContent = (err as Error).message;
+      return;
+    }
+    view!.canvas.dataset.outcomeHash = played.outcome.hash;
+    busy = true;
+    const sentState = stateId;
+    const reply = session.request({ type: 'shot', room: id, stateId: sentState, shot, ...(cueBall ? { cueBall } : {}) });
+    const shown = animator!.play(played.outcome);
+    void Promise.all([reply, shown]).then(
+      ([m]) => {
+        if (m.type === 'shot') {
+          if (m.outcome.hash !== played.outcome.hash) mismatch(m, played.outcome.hash);
+          adopt(m.game, m.stateId);
+        } else if (m.type === 'error') verdict.textContent = m.message;
+        busy = false;
+        drain();
+        render();
+      },
+      () => {
+        busy = false;
+        render();
+      },
+    );
+  }
+
+  /** Another page's shot, broadcast: simulated here from the same state, then animated. */
+  async function replay(m: ShotMessage): Promise<void> {
+    if (!game || m.stateId !== stateId + 1) {
+      adopt(m.game, m.stateId); // a gap: take the server's state as it is
+      render();
+      return;
+    }
+    const from = m.cueBall ? placeCueBall(game, m.shot.player, m.cueBall) : game;
+    const outcome = simulate(sceneOf(from), strikeOf(m.shot));
+    view!.canvas.dataset.outcomeHash = outcome.hash;
+    if (outcome.hash !== m.outcome.hash) mismatch(m, outcome.hash);
+    busy = true;
+    await animator!.play(outcome);
+    busy = false;
+    adopt(m.game, m.stateId);
+  }
+
+  function mismatch(m: ShotMessage, mine: string): void {
+    stats.mismatches++;
+    console.warn(`baize: shot ${m.stateId} in room ${m.room}: this page computed ${mine}, the server ${m.outcome.hash}; taking the server's state`);
+  }
+
+  function adopt(g: Game, sid: number): void {
+    if (sid < stateId) return;
+    game = g;
+    stateId = sid;
+  }
+
+  async function drain(): Promise<void> {
+    while (!busy && queue.length > 0) {
+      const m = queue.shift()!;
+      await replay(m);
+      render();
+    }
+  }
+
+  const stop = session.onMessage((m) => {
+    if (m.type === 'room' && m.room.id === id) {
+      room = m.room;
+      if (!busy && queue.length === 0 && m.room.stateId >= stateId) {
+        game = m.room.game;
+        stateId = m.room.stateId;
+      }
+      render();
+    } else if (m.type === 'shot' && m.room === id && m.re === undefined) {
+      queue.push(m);
+      void drain();
+    } else if (m.type === 'chat' && m.room === id) {
+      chatLog.append(h('li', {}, h('strong', {}, m.from.name), ': ', m.text));
+      chatLog.scrollTop = chatLog.scrollHeight;
+    } else if (m.type === 'error' && m.code === 'no-room' && room === null) {
+      verdict.textContent = 'There is no such room.';
+    }
+  });
+  const stopStatus = session.onStatus((s) => {
+    banner.textContent = s === 'reconnecting' ? 'Connection lost: reconnecting…' : '';
+  });
+  const stopSpace = spaceShoots(shoot);
+  const tick = setInterval(() => {
+    const d = room?.deadline;
+    clock.textContent = d && room?.status === 'playing' ? `${Math.max(0, Math.ceil((d - Date.now()) / 1000))} s` : '';
+  }, 250);
+  session.keep(`room:${id}`, { type: 'watch', room: id });
+  return () => {
+    stop();
+    stopStatus();
+    stopSpace();
+    clearInterval(tick);
+    animator?.stop();
+    view?.destroy();
+    session.forget(`room:${id}`);
+    if (!seated()) session.send({ type: 'leave', room: id });
+  };
+}
+
+function guidanceOf(room: RoomView | null): Guidance {
+  const g = (room as { guidance?: string } | null)?.guidance;
+  return g === 'none' || g === 'path' ? g : 'contact';
+}

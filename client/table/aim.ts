@@ -1,0 +1,182 @@
+// Aiming on a table view: the heading follows the pointer (or the arrow keys), power and spin come
+// from their controls, a ball in hand can be dragged inside its legal area, and the guidance the
+// room allows is drawn: an aim line, the path to first contact with its ghost ball, or the cue
+// ball's whole predicted path (simulated here with the same physics the server runs).
+import { sampleOutcome, simulate, type Outcome } from '../../shared/physics/index.ts';
+import { placementProblem, type Game } from '../../shared/rules/index.ts';
+import type { TableView } from './view.ts';
+
+export type Guidance = 'none' | 'contact' | 'path';
+
+export interface AimState {
+  heading: number;
+  /** m/s. */
+  speed: number;
+  /** Tip offsets, fractions of R. */
+  side: number;
+  top: number;
+  /** Where the ball in hand was dragged to, when it was. */
+  cueBall?: { x: number; y: number };
+}
+
+export const MIN_SPEED = 0.3;
+export const MAX_SPEED = 10;
+
+export class Aim {
+  readonly state: AimState = { heading: 0, speed: 2.5, side: 0, top: 0 };
+  private game: Game | null = null;
+  private cueId = 'cue';
+  private active = false;
+  private dragging = false;
+  private preview: { key: string; outcome: Outcome | null } | null = null;
+  private onChange: () => void = () => {};
+
+  constructor(
+    private readonly view: TableView,
+    private guidance: Guidance,
+  ) {
+    const c = view.canvas;
+    c.addEventListener('pointerdown', (e) => this.pointerDown(e));
+    c.addEventListener('pointermove', (e) => this.pointerMove(e));
+    c.addEventListener('pointerup', () => (this.dragging = false));
+    c.addEventListener('keydown', (e) => this.key(e));
+  }
+
+  /** The game to aim in, the ball struck, whether this page may aim now; `changed` redraws. */
+  set(game: Game | null, cueId: string, active: boolean, guidance: Guidance, changed: () => void): void {
+    const turnChanged = this.game?.shots !== game?.shots || this.game?.turn !== game?.turn || this.cueId !== cueId;
+    this.game = game;
+    this.cueId = cueId;
+    this.active = active;
+    this.guidance = guidance;
+    this.onChange = changed;
+    if (turnChanged) delete this.state.cueBall;
+    this.preview = null;
+  }
+
+  /** The cue ball's place: dragged in hand, or where the game has it. */
+  cuePosition(): { x: number; y: number } | null {
+    if (this.state.cueBall) return this.state.cueBall;
+    const b = this.game?.balls.find((x) => x.id === this.cueId);
+    return b ? { x: b.x, y: b.y } : null;
+  }
+
+  /** The balls to draw, with the ball in hand where it was dragged. */
+  balls(): { id: string; x: number; y: number }[] {
+    const g = this.game;
+    if (!g) return [];
+    const p = this.state.cueBall;
+    return g.balls.map((b) => (p && b.id === this.cueId ? { id: b.id, x: p.x, y: p.y } : b));
+  }
+
+  change(): void {
+    this.preview = null;
+    this.onChange();
+  }
+
+  private inHand(): boolean {
+    return this.active && this.game !== null && this.game.ballInHand !== false;
+  }
+
+  private pointerDown(e: PointerEvent): void {
+    if (!this.active) return;
+    this.view.canvas.focus();
+    const w = this.view.toWorld(e.clientX, e.clientY);
+    const cue = this.cuePosition();
+    if (cue && this.inHand() && Math.hypot(w.x - cue.x, w.y - cue.y) < this.view.spec.ballRadius * 2) {
+      this.dragging = true;
+      this.view.canvas.setPointerCapture(e.pointerId);
+      return;
+    }
+    this.aimAt(w);
+  }
+
+  private pointerMove(e: PointerEvent): void {
+    if (!this.active) return;
+    const w = this.view.toWorld(e.clientX, e.clientY);
+    if (this.dragging && this.game && this.game.ballInHand !== false) {
+      // Only legal places: inside the area, on the bed, clear of the other balls.
+      if (placementProblem(this.view.spec, this.game.balls, this.cueId, w, this.game.ballInHand) === null) {
+        this.state.cueBall = w;
+        this.change();
+      }
+      return;
+    }
+    if (e.pointerType === 'mouse' && e.buttons === 0) this.aimAt(w);
+    else if (e.buttons !== 0) this.aimAt(w);
+  }
+
+  private aimAt(w: { x: number; y: number }): void {
+    const cue = this.cuePosition();
+    if (!cue || (w.x === cue.x && w.y === cue.y)) return;
+    this.state.heading = Math.atan2(w.y - cue.y, w.x - cue.x);
+    this.change();
+  }
+
+  private key(e: KeyboardEvent): void {
+    if (!this.active) return;
+    const fine = e.shiftKey ? 0.1 : 1;
+    if (e.key === 'ArrowLeft') this.state.heading += 0.008 * fine;
+    else if (e.key === 'ArrowRight') this.state.heading -= 0.008 * fine;
+    else if (e.key === 'ArrowUp') this.state.speed = Math.min(MAX_SPEED, this.state.speed + 0.25 * fine);
+    else if (e.key === 'ArrowDown') this.state.speed = Math.max(MIN_SPEED, this.state.speed - 0.25 * fine);
+    else return;
+    e.preventDefault();
+    this.change();
+  }
+
+  /** Draws the guidance (called from the view's overlay). */
+  draw(ctx: CanvasRenderingContext2D): void {
+    const cue = this.cuePosition();
+    if (!this.active || !cue || !this.game) return;
+    const R = this.view.spec.ballRadius;
+    ctx.strokeStyle = 'rgba(255,255,255,0.7)';
+    ctx.lineWidth = 2 / this.view.pixelsPerMetre;
+    if (this.guidance === 'none') {
+      const len = 0.25 + 0.05 * this.state.speed;
+      line(ctx, [cue, { x: cue.x + len * Math.cos(this.state.heading), y: cue.y + len * Math.sin(this.state.heading) }]);
+      return;
+    }
+    const outcome = this.predict(cue);
+    if (!outcome) return;
+    const path = outcome.paths.find((p) => p.id === this.cueId);
+    if (!path) return;
+    const contact = outcome.events.find((e) => e.kind === 'ball' && e.balls.includes(this.cueId));
+    const end = this.guidance === 'contact' && contact ? contact.t : outcome.duration;
+    const points: { x: number; y: number }[] = [];
+    for (let i = 0; i <= 60; i++) {
+      const b = sampleOutcome(outcome, (end * i) / 60).find((x) => x.id === this.cueId);
+      if (b) points.push(b);
+    }
+    line(ctx, points);
+    const last = points.at(-1);
+    if (last && contact) {
+      ctx.beginPath();
+      ctx.arc(last.x, last.y, R, 0, 2 * Math.PI);
+      ctx.stroke();
+    }
+  }
+
+  /** The shot as aimed, simulated once per aim (the guidance's source). */
+  private predict(cue: { x: number; y: number }): Outcome | null {
+    const s = this.state;
+    const key = `${s.heading}|${s.speed}|${s.side}|${s.top}|${cue.x}|${cue.y}`;
+    if (this.preview?.key === key) return this.preview.outcome;
+    let outcome: Outcome | null = null;
+    try {
+      outcome = simulate({ table: this.game!.table, balls: this.balls() }, { ball: this.cueId, heading: s.heading, speed: s.speed, side: s.side, top: s.top });
+    } catch {
+      outcome = null;
+    }
+    this.preview = { key, outcome };
+    return outcome;
+  }
+}
+
+function line(ctx: CanvasRenderingContext2D, pts: readonly { x: number; y: number }[]): void {
+  if (pts.length < 2) return;
+  ctx.beginPath();
+  ctx.moveTo(pts[0]!.x, pts[0]!.y);
+  for (const p of pts.slice(1)) ctx.lineTo(p.x, p.y);
+  ctx.stroke();
+}

@@ -1,0 +1,86 @@
+// The stroke's controls beside the table: power, a spin picker (the tip's offset on the ball,
+// kept inside the miscue limit) and the Shoot button; space shoots too.
+import { h } from '../dom.ts';
+import { MAX_SPEED, MIN_SPEED, type Aim } from './aim.ts';
+
+/** The largest tip offset offered: inside the miscue limit of 0.5 R. */
+const MAX_OFFSET = 0.45;
+
+export interface Controls {
+  readonly element: HTMLElement;
+  readonly shoot: HTMLButtonElement;
+  /** Enables the controls when it is this page's turn. */
+  enable(on: boolean): void;
+  /** Reflects the aim's power and spin (after keys changed them). */
+  sync(): void;
+}
+
+export function strokeControls(aim: Aim, onShoot: () => void): Controls {
+  const power = h('input', { type: 'range', min: MIN_SPEED, max: MAX_SPEED, step: 0.05, value: aim.state.speed, 'aria-label': 'Power (m/s)' });
+  const powerText = h('output', {}, `${aim.state.speed.toFixed(2)} m/s`);
+  power.addEventListener('input', () => {
+    aim.state.speed = Number(power.value);
+    powerText.textContent = `${aim.state.speed.toFixed(2)} m/s`;
+    aim.change();
+  });
+  const spin = h('canvas', { width: 72, height: 72, className: 'spin', 'aria-label': 'Spin: click where the tip strikes the ball', role: 'img' });
+  const drawSpin = () => {
+    const ctx = spin.getContext('2d');
+    if (!ctx) return;
+    ctx.clearRect(0, 0, 72, 72);
+    ctx.fillStyle = '#f4f1e8';
+    ctx.beginPath();
+    ctx.arc(36, 36, 34, 0, 2 * Math.PI);
+    ctx.fill();
+    ctx.strokeStyle = '#c44';
+    ctx.beginPath();
+    ctx.arc(36, 36, 34 * MAX_OFFSET, 0, 2 * Math.PI);
+    ctx.stroke();
+    ctx.fillStyle = '#2e5cb8';
+    ctx.beginPath();
+    ctx.arc(36 + 34 * aim.state.side, 36 - 34 * aim.state.top, 5, 0, 2 * Math.PI);
+    ctx.fill();
+  };
+  spin.addEventListener('pointerdown', (e) => {
+    const r = spin.getBoundingClientRect();
+    let side = ((e.clientX - r.left) / r.width - 0.5) * 2;
+    let top = -((e.clientY - r.top) / r.height - 0.5) * 2;
+    const d = Math.hypot(side, top);
+    if (d > MAX_OFFSET) {
+      side *= MAX_OFFSET / d;
+      top *= MAX_OFFSET / d;
+    }
+    aim.state.side = Math.round(side * 100) / 100;
+    aim.state.top = Math.round(top * 100) / 100;
+    drawSpin();
+    aim.change();
+  });
+  const shoot = h('button', { type: 'button', className: 'shoot', onclick: () => onShoot() }, 'Shoot');
+  const element = h('div', { className: 'controls' }, h('label', {}, 'Power ', power, ' ', powerText), spin, shoot);
+  drawSpin();
+  return {
+    element,
+    shoot,
+    enable(on) {
+      shoot.disabled = !on;
+      power.disabled = !on;
+    },
+    sync() {
+      power.value = String(aim.state.speed);
+      powerText.textContent = `${aim.state.speed.toFixed(2)} m/s`;
+      drawSpin();
+    },
+  };
+}
+
+/** Space shoots when the table or the page has the focus (not while typing). */
+export function spaceShoots(onShoot: () => void): () => void {
+  const handler = (e: KeyboardEvent) => {
+    const t = e.target as HTMLElement | null;
+    if (e.key !== ' ' || (t && (t.tagName === 'INPUT' || t.tagName === 'TEXTAREA' || t.tagName === 'SELECT' || t.tagName === 'BUTTON'))) return;
+    e.preventDefault();
+    onShoot();
+  };
+  document.addEventListener('keydown', handler);
+  return () => document.removeEventListener('keydown', handler);
+}

@@ -1,0 +1,79 @@
+// A table on a canvas fitted to its container and sharp on high-DPI screens: the world (metres,
+// y up, origin at the table's centre) mapped to device pixels, redrawn on demand.
+import { tableSpec, type TableSpec } from '../../shared/physics/index.ts';
+import { drawBall, drawTable, RAIL, type DrawnBall } from './draw.ts';
+
+export type Overlay = (ctx: CanvasRenderingContext2D, view: TableView) => void;
+
+export class TableView {
+  readonly canvas: HTMLCanvasElement;
+  readonly spec: TableSpec;
+  private scale = 1;
+  private balls: readonly DrawnBall[] = [];
+  private overlay: Overlay | undefined;
+  private readonly resize: ResizeObserver;
+
+  constructor(parent: HTMLElement, table: string, label: string) {
+    this.spec = tableSpec(table);
+    this.canvas = document.createElement('canvas');
+    this.canvas.className = 'table';
+    this.canvas.setAttribute('role', 'img');
+    this.canvas.setAttribute('aria-label', label);
+    this.canvas.tabIndex = 0;
+    parent.append(this.canvas);
+    this.resize = new ResizeObserver(() => this.fit());
+    this.resize.observe(parent);
+    this.fit();
+  }
+
+  /** Metres per CSS pixel, the other way round. */
+  get pixelsPerMetre(): number {
+    return this.scale;
+  }
+
+  destroy(): void {
+    this.resize.disconnect();
+    this.canvas.remove();
+  }
+
+  /** Sizes the canvas to its container's width at the table's aspect, in device pixels. */
+  fit(): void {
+    const parent = this.canvas.parentElement;
+    if (!parent) return;
+    const w = Math.max(200, parent.clientWidth);
+    const worldW = this.spec.length + 2 * RAIL;
+    const worldH = this.spec.width + 2 * RAIL;
+    const h = Math.min(w * (worldH / worldW), window.innerHeight * 0.7);
+    const cssW = Math.min(w, h * (worldW / worldH));
+    const dpr = window.devicePixelRatio || 1;
+    this.canvas.style.width = `${cssW}px`;
+    this.canvas.style.height = `${h}px`;
+    this.canvas.width = Math.round(cssW * dpr);
+    this.canvas.height = Math.round(h * dpr);
+    this.scale = cssW / worldW;
+    this.draw(this.balls);
+  }
+
+  setOverlay(overlay: Overlay | undefined): void {
+    this.overlay = overlay;
+  }
+
+  draw(balls: readonly DrawnBall[]): void {
+    this.balls = balls;
+    const ctx = this.canvas.getContext('2d');
+    if (!ctx) return;
+    const dpr = this.canvas.width / (parseFloat(this.canvas.style.width) || this.canvas.width);
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
+    ctx.clearRect(0, 0, this.canvas.width, this.canvas.height);
+    ctx.setTransform(this.scale * dpr, 0, 0, -this.scale * dpr, this.canvas.width / 2, this.canvas.height / 2);
+    drawTable(ctx, this.spec);
+    for (const b of balls) drawBall(ctx, b, this.spec.ballRadius);
+    this.overlay?.(ctx, this);
+  }
+
+  /** The world point under a pointer event's client coordinates. */
+  toWorld(clientX: number, clientY: number): { x: number; y: number } {
+    const r = this.canvas.getBoundingClientRect();
+    return { x: (clientX - r.left - r.width / 2) / this.scale, y: -(clientY - r.top - r.height / 2) / this.scale };
+  }
+}
