@@ -2,7 +2,7 @@
 // declarations and choices, chat. A shot is simulated here the instant it is struck (the
 // shooter's page) or the instant it is broadcast (every other page), from the same state and with
 // the same physics the server ran; each page compares its hash with the server's.
-import { simulate } from '../../shared/physics/index.ts';
+import { simulate, type Outcome } from '../../shared/physics/index.ts';
 import type { RoomView, ServerMessage } from '../../shared/protocol/index.ts';
 import { cueBallId, legalTargets, placeCueBall, playShot, POCKETS, sceneOf, strikeOf, type Game, type Shot } from '../../shared/rules/index.ts';
 import { h, KIND_NAMES } from '../dom.ts';
@@ -27,8 +27,9 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   /** The game and stateId this page shows (the server's, or its own prediction of it). */
   let game: Game | null = null;
   let stateId = -1;
+  /** A shot of this page's in flight, or shots being animated: no new shot meanwhile. */
   let busy = false;
-  const queue: ShotMessage[] = [];
+  const animations: Outcome[] = [];
 
   const title = h('h2', {}, 'Room');
   const players = h('ol', { className: 'players', 'aria-label': 'Players' });
@@ -75,7 +76,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   const render = () => {
     if (!room) return;
     // A room message that came while a shot played (a new frame, a placement) applies now.
-    if (!busy && queue.length === 0 && room.stateId > stateId) {
+    if (!busy && room.stateId > stateId) {
       game = room.game;
       stateId = room.stateId;
     }
@@ -159,28 +160,36 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     view!.canvas.dataset.outcomeHash = played.outcome.hash;
     busy = true;
     const sentState = stateId;
-    const reply = session.request({ type: 'shot', room: id, stateId: sentState, shot, ...(cueBall ? { cueBall } : {}) });
-    const shown = animator!.play(played.outcome);
-    void Promise.all([reply, shown]).then(
-      ([m]) => {
+    // The server's answer is taken as soon as it comes; the table shows it once the shot has played.
+    const reply = session.request({ type: 'shot', room: id, stateId: sentState, shot, ...(cueBall ? { cueBall } : {}) }).then(
+      (m) => {
         if (m.type === 'shot') {
+          report(m, played.outcome.hash);
           if (m.outcome.hash !== played.outcome.hash) mismatch(m, played.outcome.hash);
           adopt(m.game, m.stateId);
-        } else if (m.type === 'error') verdict.textContent = m.message;
-        busy = false;
-        drain();
-        render();
+        }
+        return m;
       },
-      () => {
-        busy = false;
-        render();
-      },
+      () => null,
     );
+    const shown = animator!.play(played.outcome);
+    void Promise.all([reply, shown]).then(([m]) => {
+      busy = false;
+      render();
+      // Refused: the table is back at the state the server holds; say why.
+      if (m?.type === 'error') verdict.textContent = `The server refused the shot: ${m.message}`;
+      void animate();
+    });
   }
 
-  /** Another page's shot, broadcast: simulated here from the same state, then animated. */
-  async function replay(m: ShotMessage): Promise<void> {
+  /**
+   * Another page's shot, broadcast: simulated here at once from the same state and checked against
+   * the server's hash; its animation waits for the ones before it.
+   */
+  function replay(m: ShotMessage): void {
     if (!game || m.stateId !== stateId + 1) {
+      console.warn(`baize: shot ${m.stateId} in room ${m.room} follows state ${stateId} here: taking the server's state`);
+      report(m, `gap after ${stateId}`);
       adopt(m.game, m.stateId); // a gap: take the server's state as it is
       render();
       return;
@@ -188,11 +197,25 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     const from = m.cueBall ? placeCueBall(game, m.shot.player, m.cueBall) : game;
     const outcome = simulate(sceneOf(from), strikeOf(m.shot));
     view!.canvas.dataset.outcomeHash = outcome.hash;
+    report(m, outcome.hash);
     if (outcome.hash !== m.outcome.hash) mismatch(m, outcome.hash);
-    busy = true;
-    await animator!.play(outcome);
-    busy = false;
     adopt(m.game, m.stateId);
+    animations.push(outcome);
+    void animate();
+  }
+
+  async function animate(): Promise<void> {
+    if (busy) return;
+    busy = true;
+    while (animations.length > 0) await animator!.play(animations.shift()!);
+    busy = false;
+    render();
+  }
+
+  /** A page opened with ?report=URL posts each hash it computed there (how a browser without a driver is checked). */
+  const reportTo = new URLSearchParams(location.search).get('report');
+  function report(m: ShotMessage, mine: string): void {
+    if (reportTo) void fetch(reportTo, { method: 'POST', body: JSON.stringify({ room: m.room, stateId: m.stateId, hash: mine, server: m.outcome.hash, userAgent: navigator.userAgent }) });
   }
 
   function mismatch(m: ShotMessage, mine: string): void {
@@ -206,25 +229,16 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     stateId = sid;
   }
 
-  async function drain(): Promise<void> {
-    while (!busy && queue.length > 0) {
-      const m = queue.shift()!;
-      await replay(m);
-      render();
-    }
-  }
-
   const stop = session.onMessage((m) => {
     if (m.type === 'room' && m.room.id === id) {
       room = m.room;
-      if (!busy && queue.length === 0 && m.room.stateId >= stateId) {
+      if (!busy && m.room.stateId >= stateId) {
         game = m.room.game;
         stateId = m.room.stateId;
       }
       render();
     } else if (m.type === 'shot' && m.room === id && m.re === undefined) {
-      queue.push(m);
-      void drain();
+      replay(m);
     } else if (m.type === 'chat' && m.room === id) {
       chatLog.append(h('li', {}, h('strong', {}, m.from.name), ': ', m.text));
       chatLog.scrollTop = chatLog.scrollHeight;

@@ -20,6 +20,11 @@ export class Animator {
   /** Animates the outcome at `speed` times real time from `from` seconds; resolves at its end (or when stopped). */
   play(outcome: Outcome, speed = 1, from = 0): Promise<void> {
     this.stop();
+    if (document.hidden) {
+      // Nobody is looking: show where the balls end, at once.
+      this.view.draw(sampleOutcome(outcome, outcome.duration).filter((b) => b.motion !== 'pocketed'));
+      return Promise.resolve();
+    }
     return new Promise((resolve) => {
       this.done = resolve;
       const start = performance.now();

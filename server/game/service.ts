@@ -274,6 +274,10 @@ export class GameService {
     }
     if (room.state.status !== 'waiting' || room.state.seats.length >= 2) throw new ServiceError('room-full', `room ${msg.room} has both its players`);
     const seats = [...room.state.seats, player];
+    // A spectator who takes the seat watches no more: the seat brings every message anyway.
+    for (const c of this.lobby.socketsOf(player.id)) {
+      if (room.spectators.delete(c)) this.watching.get(c)?.delete(room.state.id);
+    }
     this.startMatch(room, { ...room.state, seats, order: seats.map((p) => p.id) }, conn, msg.id);
     this.index(room);
   }

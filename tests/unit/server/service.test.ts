@@ -199,3 +199,17 @@ describe('many tabs of one player', () => {
     expect(last(h, 3, 'room').room.players[1]!.heldUntil).toBeUndefined();
   });
 });
+
+describe('spectators', () => {
+  it('stops counting a spectator who takes the free seat', () => {
+    h = openHarness();
+    welcome(h, 1, 'Ann');
+    welcome(h, 2, 'Bob');
+    h.send(1, { type: 'create', kind: 'nineball' });
+    const id = last(h, 1, 'room').room.id;
+    h.send(2, { type: 'watch', room: id });
+    expect(last(h, 1, 'room').room.spectators).toBe(1);
+    h.send(2, { type: 'join', room: id });
+    expect(last(h, 1, 'room').room).toMatchObject({ status: 'playing', spectators: 0 });
+  });
+});
