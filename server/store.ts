@@ -169,7 +169,13 @@ export class Store {
         `SELECT ${RECORD_COLUMNS} WHERE rec.id IN (SELECT id FROM records WHERE kind = ? ORDER BY better DESC, id LIMIT ? OFFSET ?)
          ORDER BY rec.better DESC, rec.id`,
       ),
-      recordsOf: db.prepare<[number], RecordEntry>(`SELECT ${RECORD_COLUMNS} WHERE rec.player_id = ? ORDER BY rec.kind, rec.better DESC, rec.id`),
+      // A player's best record of each kind: the first row of each kind in records_player_best.
+      bestRecordsOf: db.prepare<[number, number], RecordEntry>(
+        `SELECT ${RECORD_COLUMNS} WHERE rec.id IN (
+           SELECT (SELECT id FROM records r WHERE r.player_id = ? AND r.kind = k.kind ORDER BY r.better DESC, r.id LIMIT 1)
+           FROM (SELECT 'nineball' AS kind UNION ALL SELECT 'snooker' UNION ALL SELECT 'threecushion') k)
+         AND rec.player_id = ? ORDER BY rec.kind`,
+      ),
       matchesAll: db.prepare<[number, number], MatchRow>(`SELECT ${MATCH_COLUMNS} ORDER BY m.id DESC LIMIT ? OFFSET ?`),
       matchesKind: db.prepare<[string, number, number], MatchRow>(`SELECT ${MATCH_COLUMNS} WHERE m.kind = ? ORDER BY m.id DESC LIMIT ? OFFSET ?`),
       // The page's ids by a merge of matches_player1 and matches_player2, both walked newest first,
@@ -299,8 +305,9 @@ export class Store {
     return this.s.records.all(kind, limit, offset);
   }
 
-  recordsOf(playerId: number): RecordEntry[] {
-    return this.s.recordsOf.all(playerId);
+  /** A player's best record of each kind that has records. */
+  bestRecordsOf(playerId: number): RecordEntry[] {
+    return this.s.bestRecordsOf.all(playerId, playerId);
   }
 
   /** Matches newest first, of a player and of a kind when given. */

@@ -135,15 +135,13 @@ export class Api {
     const p = this.store.playerById(id);
     if (!p) throw new ApiError(404, 'not-found', `no player ${id}`);
     const ratings = this.store.ratingsOf(id);
-    const best = new Map<string, RecordEntry>();
-    for (const r of this.store.recordsOf(id)) if (!best.has(r.kind)) best.set(r.kind, r);
     return {
       id: String(p.id),
       name: p.name,
       ratings: Object.fromEntries(ratings.map((r) => [r.kind, { rating: round(r.rating), rd: round(r.rd), games: r.games, wins: r.wins, provisional: r.rd >= PROVISIONAL_RD }])),
       games: ratings.reduce((n, r) => n + r.games, 0),
       wins: ratings.reduce((n, r) => n + r.wins, 0),
-      records: [...best.values()].map((r) => recordEntry(r)),
+      records: this.store.bestRecordsOf(id).map((r) => recordEntry(r)),
       recent: this.store.matches({ player: id }, 10, 0).map(matchSummary),
     };
   }

@@ -166,6 +166,12 @@ describe('the HTTP API', () => {
         expect(records.body.entries.some((e: any) => e.practice === res.body.id && e.player.id === p.player.id)).toBe(true);
       }
     }
+    // The player's page shows their best record of each kind.
+    const page = await get(`/api/players/${p.player.id}`);
+    for (const kind of ['snooker', 'threecushion']) {
+      const all = (await get(`/api/records?kind=${kind}&limit=100`)).body.entries.filter((e: any) => e.player.id === p.player.id);
+      expect(page.body.records.find((r: any) => r.kind === kind)?.value).toBe(Math.max(...all.map((e: any) => e.value)));
+    }
   }, 120_000);
 
   it('answers every bad parameter with a 400 naming it, unknown ids with a 404, and stores nothing', async () => {
