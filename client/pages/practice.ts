@@ -118,7 +118,8 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
     view!.canvas.dataset.outcomeHash = played.outcome.hash;
     last = played.outcome;
     busy = true;
-    refresh();
+    aim.disable();
+    controls?.enable(false);
     const v = played.game.verdict!;
     if (run) {
       run.shots.push({ shot, ...(s.cueBall ? { cueBall: s.cueBall } : {}) });

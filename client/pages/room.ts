@@ -159,6 +159,8 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     }
     view!.canvas.dataset.outcomeHash = played.outcome.hash;
     busy = true;
+    aim.disable();
+    controls?.enable(false);
     const sentState = stateId;
     // The server's answer is taken as soon as it comes; the table shows it once the shot has played.
     const reply = session.request({ type: 'shot', room: id, stateId: sentState, shot, ...(cueBall ? { cueBall } : {}) }).then(
@@ -207,6 +209,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   async function animate(): Promise<void> {
     if (busy) return;
     busy = true;
+    aim?.disable();
     while (animations.length > 0) await animator!.play(animations.shift()!);
     busy = false;
     render();

@@ -54,6 +54,12 @@ export class Aim {
     this.preview = null;
   }
 
+  /** Stops aiming (a shot is playing): no guidance, no input, until the next set(). */
+  disable(): void {
+    this.active = false;
+    this.dragging = false;
+  }
+
   /** The cue ball's place: dragged in hand, or where the game has it. */
   cuePosition(): { x: number; y: number } | null {
     if (this.state.cueBall) return this.state.cueBall;

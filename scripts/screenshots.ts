@@ -1,0 +1,77 @@
+// npm run screenshots — docs/screenshots/{lobby,table,leaderboard}.png from a real server and
+// Debian's Chromium: a few rooms and rated matches made by protocol clients, then the pages.
+import { mkdirSync } from 'node:fs';
+import { join, resolve } from 'node:path';
+import { ProtocolClient } from '../bots/client.ts';
+import type { ServerMessage } from '../shared/protocol/index.ts';
+import { launchChromium } from '../tests/support/browser.ts';
+import { buildClient } from './build-client.ts';
+import { ROOT, startServerProcess, tempDir } from '../tests/support/server-process.ts';
+
+const OUT = resolve(ROOT, 'docs/screenshots');
+await buildClient();
+mkdirSync(OUT, { recursive: true });
+const server = await startServerProcess({ BAIZE_DB: join(tempDir(), 'baize.db') });
+const ws = `${server.url.replace('http', 'ws')}/ws`;
+
+async function player(name: string): Promise<{ c: ProtocolClient; id: string; last: () => { stateId: number; turn: string } }> {
+  const c = await ProtocolClient.connect(ws);
+  let state = { stateId: 0, turn: '' };
+  c.onMessage((m: ServerMessage) => {
+    if (m.type === 'room' && m.room.game) state = { stateId: m.room.stateId, turn: m.room.game.turn };
+    if (m.type === 'shot') state = { stateId: m.stateId, turn: m.game.turn };
+  });
+  const w = await c.request({ type: 'hello', name });
+  return { c, id: w.type === 'welcome' ? w.player.id : '', last: () => state };
+}
+
+/** A rated match between two clients: each plays two soft fouls, then the loser concedes. */
+async function ratedMatch(a: Awaited<ReturnType<typeof player>>, b: Awaited<ReturnType<typeof player>>, kind: 'nineball' | 'snooker'): Promise<void> {
+  const r = await a.c.request({ type: 'create', kind });
+  const room = r.type === 'room' ? r.room.id : '';
+  await b.c.request({ type: 'join', room });
+  for (let i = 0; i < 4; i++) {
+    await new Promise((res) => setTimeout(res, 50));
+    const s = a.last();
+    const who = s.turn === a.id ? a : b;
+    await who.c.request({ type: 'shot', room, stateId: s.stateId, shot: { ball: 'cue', heading: Math.PI, speed: 0.05, side: 0, top: 0 } });
+  }
+  await b.c.request({ type: 'concede', room });
+}
+
+const names = ['Ronnie', 'Efren', 'Shane', 'Jasmin', 'Torbjörn', 'Kelly'];
+const ps = [];
+for (const n of names) ps.push(await player(n));
+for (let i = 0; i < 6; i++) await ratedMatch(ps[i % 6]!, ps[(i + 1) % 6]!, 'nineball');
+await ratedMatch(ps[0]!, ps[2]!, 'nineball');
+await ps[3]!.c.request({ type: 'create', kind: 'snooker', raceTo: 3 });
+await ps[4]!.c.request({ type: 'create', kind: 'threecushion', raceTo: 15 });
+const playing = await ps[5]!.c.request({ type: 'create', kind: 'eightball', raceTo: 2 });
+await ps[1]!.c.request({ type: 'join', room: playing.type === 'room' ? playing.room.id : '' });
+
+const browser = await launchChromium();
+try {
+  const page = await browser.newPage({ viewport: { width: 1100, height: 760 }, deviceScaleFactor: 1 });
+  await page.goto(`${server.url}/`);
+  await page.waitForSelector('.rooms li[data-room]');
+  await page.screenshot({ path: join(OUT, 'lobby.png') });
+
+  // A table mid-game: this page breaks against a protocol client in the other seat.
+  await page.getByRole('button', { name: 'Create table' }).click();
+  await page.waitForURL(/\/room\//);
+  const opponent = await player('Allison');
+  await opponent.c.request({ type: 'join', room: page.url().split('/').at(-1)! });
+  await page.waitForFunction(() => !(document.querySelector('button.shoot') as HTMLButtonElement).disabled);
+  await page.getByRole('button', { name: 'Shoot' }).click();
+  await page.waitForTimeout(1200);
+  await page.screenshot({ path: join(OUT, 'table.png') });
+
+  await page.goto(`${server.url}/leaderboard?kind=nineball`);
+  await page.waitForSelector('table.board tbody tr');
+  await page.screenshot({ path: join(OUT, 'leaderboard.png') });
+  console.log(`screenshots written to ${OUT}`);
+} finally {
+  await browser.close();
+  await server.stop('SIGKILL');
+  process.exit(0);
+}
