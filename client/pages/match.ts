@@ -6,6 +6,7 @@ import { h, KIND_NAMES } from '../dom.ts';
 import { api } from '../net/api.ts';
 import { Animator } from '../table/animator.ts';
 import { TableView } from '../table/view.ts';
+import { inWords } from '../verdict.ts';
 
 interface MatchBody extends MatchRecord {
   kind: string;
@@ -23,7 +24,7 @@ export function mountMatch(root: HTMLElement, _ctx: unknown, id: string): () => 
   api<MatchBody>(`/api/matches/${encodeURIComponent(id)}`).then(
     (m) => {
       if (!live) return;
-      const names = (s: string) => m.players.reduce((t, p) => t.replace(new RegExp(`\\b${p.id}\\b`, 'g'), p.name), s);
+      const names = (s: string) => inWords(s, (pid) => m.players.find((p) => p.id === pid)?.name);
       let replayed;
       try {
         replayed = replayMatch(m);

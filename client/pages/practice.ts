@@ -22,6 +22,7 @@ import { Aim } from '../table/aim.ts';
 import { Animator } from '../table/animator.ts';
 import { spaceShoots, strokeControls } from '../table/controls.ts';
 import { TableView } from '../table/view.ts';
+import { inWords } from '../verdict.ts';
 
 const ME = 'me';
 
@@ -129,7 +130,7 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
       busy = false;
       game = played.game;
       const over = run && (game.turn !== ME || game.winner !== null);
-      info.textContent = `${v.message.replaceAll(PRACTICE_OPPONENT, 'the table').replace(/\bme\b/g, 'you')}${run ? ` Score ${run.score}.${over ? ' The run is over: submit it.' : ''}` : ''}`;
+      info.textContent = `${inWords(v.message, (id) => (id === ME ? 'you' : id === PRACTICE_OPPONENT ? 'the table' : undefined))}${run ? ` Score ${run.score}.${over ? ' The run is over: submit it.' : ''}` : ''}`;
       refresh();
     });
   }

@@ -11,6 +11,7 @@ import { Aim, type Guidance } from '../table/aim.ts';
 import { Animator } from '../table/animator.ts';
 import { spaceShoots, strokeControls } from '../table/controls.ts';
 import { TableView } from '../table/view.ts';
+import { inWords } from '../verdict.ts';
 
 /** Hash mismatches with the server on this page (there should be none). */
 const stats = { mismatches: 0 };
@@ -53,7 +54,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   const seated = () => !!room?.players.some((p) => p.id === me());
   const myTurn = () => !!game && room?.status === 'playing' && game.winner === null && game.turn === me() && seated() && !busy;
   const nameOf = (pid: string) => room?.players.find((p) => p.id === pid)?.name ?? pid;
-  const words = (text: string) => text.replace(/\b(\d+|practice-opponent)\b/g, (m) => (room?.players.some((p) => p.id === m) ? nameOf(m) : m));
+  const words = (text: string) => inWords(text, (pid) => (room?.players.some((p) => p.id === pid) ? nameOf(pid) : undefined));
 
   let controls: ReturnType<typeof strokeControls> | null = null;
   const redraw = () => {

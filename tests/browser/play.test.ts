@@ -226,6 +226,11 @@ describe.skipIf(!chromiumAvailable())('the browser client', () => {
       await page.goto(`${server.url}${path}`);
       await page.waitForLoadState('networkidle');
     }
+    // The first test's match, replayed in this browser from its record, lands on every hash.
+    await page.goto(`${server.url}/match/1`);
+    await expect.poll(() => page.locator('section').first().textContent(), { timeout: 20_000 }).toContain("every hash matches the server's");
+    await page.getByRole('button', { name: 'Play' }).click();
+    await expect.poll(() => page.locator('canvas.table').getAttribute('data-outcome-hash'), { timeout: 20_000 }).toMatch(/^[0-9a-f]{16}$/);
     expect(errors).toEqual([]);
     await ctx.close();
   }, 60_000);
