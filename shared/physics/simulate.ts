@@ -2,26 +2,19 @@
 // involved, and predicts again only for them (detect.ts says when, ball-collision.ts and the
 // cushion kernel say what, cloth-motion.ts moves the balls in between). Balls at rest cost nothing
 // and effort follows events: nothing steps with the clock.
-import { copySample, type BallSample, type BallState, type Motion } from './ball-state.ts';
+import { type BallSample, type BallState, type Motion } from './ball-state.ts';
 import { collideBalls, type BallBallParams } from './ball-collision.ts';
-import { accelerationAlong, emptySample, REST_SPEED, sampleAt, settle, startSegment, type ClothParams } from './cloth-motion.ts';
+import { emptySample, sampleAt, settle, startSegment, type ClothParams } from './cloth-motion.ts';
+import { restAgainstCushion, settlePair } from './contact-policy.ts';
 import { cushionRebound } from './cushion.ts';
 import type { CushionParams } from './cushion-types.ts';
-import { arcTime, ballBallTime, boxesOverlap, CONTACT_ACCEL, CONTACT_SPEED, pocketTime, segmentTime, sweptBox, type Path } from './detect.ts';
+import { arcTime, ballBallTime, boxesOverlap, CONTACT_SPEED, pocketTime, segmentTime, sweptBox, type Path } from './detect.ts';
 import { EventQueue, Kind, type Prediction } from './event-queue.ts';
 import { hashFinalState } from './hash.ts';
 import type { FinalBall, Outcome, PathSegment, Scene, Shot, SimEvent, SimOptions } from './sim-types.ts';
 import { strikeBall } from './strike.ts';
-import { cushionParamsOf, type TableSpec } from './tables.ts';
+import { clothParamsOf, cushionParamsOf, type TableSpec } from './tables.ts';
 import { validateOptions, validateScene, validateShot } from './validate-input.ts';
-
-/**
- * A rebound that would take the ball (or two balls) apart by less than this before friction brings
- * it back is a resting contact: the normal velocity and the spin that drives it back are removed,
- * which only takes energy away. Without it a sliding ball pressed against a cushion would bounce
- * ever more often (a Zeno sequence) instead of running along it.
- */
-export const CREEP_DISTANCE = 1e-4; // m
 
 /**
  * A ball struck again within this time (s) of its last impact bounces elastically: the TC model of
@@ -61,16 +54,6 @@ function tableBoxes(table: TableSpec): { cushions: Float64Array[]; pockets: Floa
   return boxes;
 }
 
-/** Sets a ball's velocity along n to vn and its spin about t = (n_y, -n_x) to wt. */
-function lockNormal(s: BallSample, nx: number, ny: number, vn: number, wt: number): void {
-  const dv = vn - (s.vx * nx + s.vy * ny);
-  s.vx += dv * nx;
-  s.vy += dv * ny;
-  const dw = wt - (s.wx * ny - s.wy * nx);
-  s.wx += dw * ny;
-  s.wy -= dw * nx;
-}
-
 class Simulation {
   readonly balls: BallState[];
   readonly queue = new EventQueue();
@@ -108,7 +91,7 @@ class Simulation {
     readonly cushionTol: SimOptions['cushionTolerance'],
   ) {
     this.R = table.ballRadius;
-    this.cloth = { R: this.R, g: table.g, muSlide: table.cloth.muSlide, muRoll: table.cloth.muRoll, spinDecel: table.cloth.spinDecel };
+    this.cloth = clothParamsOf(table);
     this.ballParams = { R: this.R, ...table.ballBall };
     this.elasticParams = { ...this.ballParams, restitution: 1 };
     this.plasticParams = { ...this.ballParams, restitution: 0 };
@@ -337,9 +320,7 @@ class Simulation {
     this.lastImpact[b.index] = t;
     settle(sa, this.cloth);
     settle(sb, this.cloth);
-    this.settleContact(sa, sb, nx0 / d, ny0 / d);
-    this.rollTogether(sa, sb, nx0 / d, ny0 / d);
-    this.stopPressing(sa, sb, nx0 / d, ny0 / d);
+    settlePair(sa, sb, nx0 / d, ny0 / d, this.cloth, this.scratch);
     if (!(speed > CONTACT_SPEED)) {
       // A pressed contact again at the same instant: the ball is wedged in a cluster whose pair
       // locks undo each other (a ball pressed from two sides). Both stop; only energy is lost.
@@ -353,87 +334,6 @@ class Simulation {
     this.restart(b, t, sb);
     this.events.push({ t, kind: 'ball', balls: [a.id, b.id], speed });
     this.predictAround([a, b], t);
-  }
-
-  /**
-   * Two balls that would separate by less than CREEP_DISTANCE before the cloth brings them back
-   * together stay in contact: they are locked along the line of centres (equal normal velocities)
-   * and the slip of each on the cloth along that line is brought to zero, by the friction impulses
-   * the cloth would give them while they press on each other. Locking velocities with impulses
-   * can only take energy away (Kelvin's theorem on impulsive constraints), and afterwards
-   * neither ball is driven into the other, so no Zeno sequence of ever smaller impacts follows.
-   *
-   * Along n, with V the common normal velocity and s_i = R (ω_i · t), t = (n_y, -n_x), each
-   * ball's cloth slip along n is V + s_i. Cloth impulses F_A, F_B (per unit mass) change V by
-   * (F_A + F_B)/2, the pair sharing them, and s_i by (5/2) F_i. Zero slip for both gives
-   * S = F_A + F_B = -2 (2V + s_A + s_B) / 7 and F_A - F_B = -(2/5)(s_A - s_B).
-   */
-  private settleContact(sa: BallSample, sb: BallSample, nx: number, ny: number): void {
-    const sep = (sb.vx - sa.vx) * nx + (sb.vy - sa.vy) * ny;
-    const pull = this.normalAccel(sa, nx, ny) - this.normalAccel(sb, nx, ny);
-    if (!(pull > 0) || sep * sep >= 2 * pull * CREEP_DISTANCE) return;
-    const R = this.R;
-    const V = 0.5 * ((sa.vx + sb.vx) * nx + (sa.vy + sb.vy) * ny);
-    const spA = R * (sa.wx * ny - sa.wy * nx);
-    const spB = R * (sb.wx * ny - sb.wy * nx);
-    const S = (-2 * (2 * V + spA + spB)) / 7;
-    const D = -0.4 * (spA - spB);
-    const Vn = V + 0.5 * S;
-    lockNormal(sa, nx, ny, Vn, (spA + 1.25 * (S + D)) / R);
-    lockNormal(sb, nx, ny, Vn, (spB + 1.25 * (S - D)) / R);
-  }
-
-  /**
-   * Two rolling balls still pressed together after settleContact (their rolling resistance pulls
-   * them into each other, and they do not slide apart sideways) roll on as one: both take the mean
-   * velocity, rolling. Momentum is kept and, since both rolled before, energy can only drop (it is
-   * 7/10 m v² per ball, convex in v).
-   */
-  private rollTogether(sa: BallSample, sb: BallSample, nx: number, ny: number): void {
-    if (!this.pressing(sa, sb, nx, ny) || !this.rolls(sa) || !this.rolls(sb)) return;
-    const vx = 0.5 * (sa.vx + sb.vx);
-    const vy = 0.5 * (sa.vy + sb.vy);
-    for (const s of [sa, sb]) {
-      s.vx = vx;
-      s.vy = vy;
-      s.wx = -vy / this.R;
-      s.wy = vx / this.R;
-    }
-  }
-
-  /**
-   * A pair still pressed together after the locks above (one ball rolling, the other sliding
-   * across the line of centres) stops moving along that line: both lose their normal velocity and
-   * the spin that goes with it, so neither is driven into the other any more. Taking velocity
-   * components away only takes energy away. It happens when one ball pushes another along, which
-   * the closed-form motion cannot follow. Measured over 3000 random scenes (44,000 events): 78
-   * such stops, 12 of them of pairs moving faster than 1 cm/s along their line of centres.
-   */
-  private stopPressing(sa: BallSample, sb: BallSample, nx: number, ny: number): void {
-    if (!this.pressing(sa, sb, nx, ny)) return;
-    lockNormal(sa, nx, ny, 0, 0);
-    lockNormal(sb, nx, ny, 0, 0);
-  }
-
-  /** Whether two touching balls neither part nor slide apart sideways while the cloth pushes them together. */
-  private pressing(sa: BallSample, sb: BallSample, nx: number, ny: number): boolean {
-    const dvx = sb.vx - sa.vx;
-    const dvy = sb.vy - sa.vy;
-    if (Math.abs(dvx * nx + dvy * ny) > CONTACT_SPEED) return false;
-    const pull = this.normalAccel(sa, nx, ny) - this.normalAccel(sb, nx, ny);
-    return dvx * dvx + dvy * dvy - 2 * this.R * pull < -2 * this.R * CONTACT_ACCEL;
-  }
-
-  private rolls(s: BallSample): boolean {
-    const ux = s.vx - this.R * s.wy;
-    const uy = s.vy + this.R * s.wx;
-    return ux * ux + uy * uy <= REST_SPEED * REST_SPEED;
-  }
-
-  /** The acceleration along n that the cloth gives a ball in state s, as its next segment will move. */
-  private normalAccel(s: BallSample, nx: number, ny: number): number {
-    const c = copySample(s, this.scratch);
-    return accelerationAlong(c, settle(c, this.cloth), nx, ny, this.cloth);
   }
 
   private onCushion(b: BallState, index: number, t: number): void {
@@ -471,11 +371,7 @@ class Simulation {
     s.wz = out.wz;
     // A rebound too weak to leave the cushion against the cloth's pull becomes a resting contact.
     const away = -(s.vx * nx + s.vy * ny);
-    const pull = this.normalAccel(s, nx, ny);
-    if (pull > 0 && away * away < 2 * pull * CREEP_DISTANCE) {
-      // Against the fixed cushion the lock is simply: no normal velocity, no cloth slip along n.
-      lockNormal(s, nx, ny, 0, 0);
-    }
+    restAgainstCushion(s, nx, ny, away, this.cloth, this.scratch);
     this.restart(b, t, s);
     this.events.push({ t, kind: 'cushion', balls: [b.id], cushion: cushion.name, speed: vyf });
     this.predictAround([b], t);

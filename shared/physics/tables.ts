@@ -1,6 +1,7 @@
 // Table and ball specifications, with the physical constants in use. Lengths in metres, masses in
 // kilograms. The playing area is measured between the cushion noses; the origin is its centre,
 // x along the long side, y across, z up (right-handed); headings from +x, counter-clockwise.
+import type { ClothParams } from './cloth-motion.ts';
 import type { CushionParams } from './cushion-types.ts';
 import { buildOutline, type Cushion, type Pocket, type PocketShape } from './table-geometry.ts';
 
@@ -158,6 +159,11 @@ export function tableSpec(name: string): TableSpec {
  * nose, restitution and friction, and its cloth's sliding friction at the table contact. The
  * simulation uses these; the kernel's accuracy tests use them for "each table's constants".
  */
+/** The parameters of motion on a table's cloth (cloth-motion.ts), built here once for every caller. */
+export function clothParamsOf(table: TableSpec): ClothParams {
+  return { R: table.ballRadius, g: table.g, muSlide: table.cloth.muSlide, muRoll: table.cloth.muRoll, spinDecel: table.cloth.spinDecel };
+}
+
 export function cushionParamsOf(table: TableSpec): CushionParams {
   return {
     M: table.ballMass,

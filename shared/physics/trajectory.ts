@@ -3,7 +3,7 @@
 import type { BallSample, Motion } from './ball-state.ts';
 import { emptySample, sampleAt, specificEnergy, type ClothParams } from './cloth-motion.ts';
 import type { Outcome, PathSegment } from './sim-types.ts';
-import { tableSpec } from './tables.ts';
+import { clothParamsOf, tableSpec } from './tables.ts';
 
 export interface BallAtTime extends BallSample {
   readonly id: string;
@@ -11,8 +11,7 @@ export interface BallAtTime extends BallSample {
 }
 
 export function clothParams(tableName: string): ClothParams {
-  const t = tableSpec(tableName);
-  return { R: t.ballRadius, g: t.g, muSlide: t.cloth.muSlide, muRoll: t.cloth.muRoll, spinDecel: t.cloth.spinDecel };
+  return clothParamsOf(tableSpec(tableName));
 }
 
 /** The last segment with t0 <= t (binary search); the first one if t is before it. */

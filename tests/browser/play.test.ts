@@ -122,8 +122,10 @@ describe.skipIf(!chromiumAvailable())('the browser client', () => {
       await expect.poll(() => hashOf(a), { timeout: 20_000 }).toBe(foul.outcome.hash);
       await expect.poll(() => hashOf(b), { timeout: 20_000 }).toBe(foul.outcome.hash);
 
-      // When that stroke was a foul, the opponent has the ball in hand: they drag it and shoot.
-      if (foul.game.verdict!.foul) {
+      // That stroke is a foul (too soft to reach a rail after any contact): the opponent has the
+      // ball in hand, drags it and shoots.
+      expect(foul.game.verdict!.foul).toBe(true);
+      {
         const g = foul.game;
         expect(g.ballInHand).toBe('anywhere');
         const taker = onTurn();
