@@ -1,6 +1,7 @@
 // The paper's Figs. 9, 10 and 12 (Mathavan, Jackson and Parkin 2010) computed by the kernel
 // (shared/physics), paper constants.
-import { cushionRebound, cushionTrace } from '../shared/physics/index.ts';
+import { cushionRebound } from '../shared/physics/index.ts';
+import { cushionTrace } from '../shared/physics/diagnostics.ts';
 import { PAPER, paperState } from '../tests/support/cushion-cases.ts';
 import { figureSvg, PALETTE } from './figures-svg.ts';
 import type { Series } from './figures-svg.ts';

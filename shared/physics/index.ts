@@ -1,9 +1,8 @@
-// The one entry point of the physics module: everything server, client, tests and benchmarks use.
+// The one entry point of the physics module: what the server, the client and outside callers use.
+// Diagnostics (the cushion impact's step counts and trace) have an entry of their own: diagnostics.ts.
 export { tableSpec, isTableName, TABLE_NAMES, cushionParamsOf } from './tables.ts';
 export type { TableName, TableSpec } from './tables.ts';
-export { cushionRebound, cushionImpact, cushionTrace } from './cushion.ts';
-export type { CushionStateOut, CushionImpact } from './cushion.ts';
-export type { CushionTracePoint } from './cushion-solver.ts';
+export { cushionRebound } from './cushion.ts';
 export { CUSHION_TOLERANCES } from './cushion-types.ts';
 export type { CushionState, CushionParams, CushionOptions, CushionOutcome, CushionToleranceName } from './cushion-types.ts';
 export { simulate } from './simulate.ts';

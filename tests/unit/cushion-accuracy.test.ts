@@ -4,7 +4,8 @@
 // each table's, and random physical ones.
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { cushionImpact, cushionRebound } from '../../shared/physics/index.ts';
+import { cushionRebound } from '../../shared/physics/index.ts';
+import { cushionImpact } from '../../shared/physics/diagnostics.ts';
 import { MAX_STEPS } from '../../shared/physics/cushion-solver.ts';
 import { referenceRebound } from '../support/cushion-reference.ts';
 import { legacyTableParams, PAPER, paperState, relError, TABLE_PARAMS } from '../support/cushion-cases.ts';

@@ -14,7 +14,7 @@ import {
 } from '../../shared/physics/cushion-express.ts';
 import { CushionModel } from '../../shared/physics/cushion-model.ts';
 import { SERIES_AT, SERIES_CUT, SERIES_LENGTH, SERIES_NORMS, SERIES_TERMS } from '../../shared/physics/cushion-series.ts';
-import { cushionImpact } from '../../shared/physics/index.ts';
+import { cushionImpact } from '../../shared/physics/diagnostics.ts';
 import type { CushionParams, CushionState } from '../../shared/physics/index.ts';
 import { CUSHION_SERIES_FILE, CUSHION_SERIES_SOURCE } from '../../scripts/gen-cushion-series.ts';
 import { benchGrid, PAPER, paperState, relError, TABLE_PARAMS } from '../support/cushion-cases.ts';

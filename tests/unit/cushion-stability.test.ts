@@ -4,7 +4,8 @@
 // bad input, and energy that never grows.
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { cushionImpact, cushionRebound } from '../../shared/physics/index.ts';
+import { cushionRebound } from '../../shared/physics/index.ts';
+import { cushionImpact } from '../../shared/physics/diagnostics.ts';
 import { cushionImpactSolver } from '../../shared/physics/cushion.ts';
 import type { CushionParams, CushionState } from '../../shared/physics/index.ts';
 import { MAX_STEPS } from '../../shared/physics/cushion-solver.ts';
