@@ -1,8 +1,9 @@
-// The contact policy: what happens to balls that stay touching after an impact, which the
-// closed-form motion between events cannot follow. Pairs that would part by less than
+// The contact policy: what happens to balls that stay touching or keep striking each other, which
+// the closed-form motion between events cannot follow. Repeated impacts at one instant turn
+// elastic (the TC model), then plastic, then stop a wedged ball; pairs that would part by less than
 // CREEP_DISTANCE are locked along their line of centres, rolling pairs pressed together roll on as
 // one, pairs still pressed stop along that line, and a ball that cannot leave a cushion rests
-// against it. Each step only takes energy away.
+// against it. Each step keeps or takes away energy, never adds it.
 import { copySample, type BallSample } from './ball-state.ts';
 import { accelerationAlong, REST_SPEED, settle, type ClothParams } from './cloth-motion.ts';
 import { CONTACT_ACCEL, CONTACT_SPEED } from './detect.ts';
@@ -14,6 +15,40 @@ import { CONTACT_ACCEL, CONTACT_SPEED } from './detect.ts';
  * ever more often (a Zeno sequence) instead of running along it.
  */
 export const CREEP_DISTANCE = 1e-4; // m
+
+/**
+ * A ball struck again within this time (s) of its last impact bounces elastically: the TC model of
+ * Luding and McNamara (1998, Granular Matter 1:113-128) against inelastic collapse. Touching
+ * balls struck at one instant (a rack, a line of frozen balls) then pass the impulse along in a
+ * finite number of impacts, like a Newton's cradle, instead of an endless train of ever smaller
+ * inelastic ones. Elastic impacts keep energy, so energy still never rises.
+ */
+export const TC_TIME = 1e-6;
+
+/**
+ * A ball in more impacts than this at one instant is wedged between others, where elastic TC
+ * bounces could go on for ever: its further impacts at that instant are plastic, and beyond
+ * WEDGED_IMPACTS both balls stop (each step only removes energy).
+ */
+export const ELASTIC_IMPACTS = 6;
+export const WEDGED_IMPACTS = 12;
+
+export type ImpactKind = 'normal' | 'elastic' | 'plastic' | 'wedged';
+
+/**
+ * How a ball-ball impact is resolved: `repeats` is the most impacts either ball has had at this
+ * instant, `rapid` whether either was struck within TC_TIME before.
+ */
+export function impactKind(repeats: number, rapid: boolean): ImpactKind {
+  if (repeats > WEDGED_IMPACTS) return 'wedged';
+  if (repeats > ELASTIC_IMPACTS) return 'plastic';
+  return rapid ? 'elastic' : 'normal';
+}
+
+/** Both balls stop moving on the cloth (a wedged ball, a ball pressed from two sides); spin about z is kept. */
+export function stopBoth(sa: BallSample, sb: BallSample): void {
+  for (const s of [sa, sb]) s.vx = s.vy = s.wx = s.wy = 0;
+}
 
 /** Sets a ball's velocity along n to vn and its spin about t = (n_y, -n_x) to wt. */
 function lockNormal(s: BallSample, nx: number, ny: number, vn: number, wt: number): void {

@@ -5,7 +5,7 @@
 import { type BallSample, type BallState, type Motion } from './ball-state.ts';
 import { collideBalls, type BallBallParams } from './ball-collision.ts';
 import { emptySample, sampleAt, settle, startSegment, type ClothParams } from './cloth-motion.ts';
-import { restAgainstCushion, settlePair } from './contact-policy.ts';
+import { impactKind, restAgainstCushion, settlePair, stopBoth, TC_TIME } from './contact-policy.ts';
 import { cushionRebound } from './cushion.ts';
 import type { CushionParams } from './cushion-types.ts';
 import { arcTime, ballBallTime, boxesOverlap, CONTACT_SPEED, pocketTime, segmentTime, sweptBox, type Path } from './detect.ts';
@@ -15,23 +15,6 @@ import type { FinalBall, Outcome, PathSegment, Scene, Shot, SimEvent, SimOptions
 import { strikeBall } from './strike.ts';
 import { clothParamsOf, cushionParamsOf, type TableSpec } from './tables.ts';
 import { validateOptions, validateScene, validateShot } from './validate-input.ts';
-
-/**
- * A ball struck again within this time (s) of its last impact bounces elastically: the TC model of
- * Luding and McNamara (1998, Granular Matter 1:113-128) against inelastic collapse. Touching
- * balls struck at one instant (a rack, a line of frozen balls) then pass the impulse along in a
- * finite number of impacts, like a Newton's cradle, instead of an endless train of ever smaller
- * inelastic ones. Elastic impacts keep energy, so energy still never rises.
- */
-export const TC_TIME = 1e-6;
-
-/**
- * A ball in more impacts than this at one instant is wedged between others, where elastic TC
- * bounces could go on for ever: its further impacts at that instant are plastic, and beyond
- * WEDGED_IMPACTS both balls stop (each step only removes energy).
- */
-export const ELASTIC_IMPACTS = 6;
-export const WEDGED_IMPACTS = 12;
 
 /** Events per ball beyond which the loop is broken, with an error, never a silent answer. */
 const EVENTS_PER_BALL_LIMIT = 2000;
@@ -309,13 +292,9 @@ class Simulation {
     const speed = ((sa.vx - sb.vx) * nx0 + (sa.vy - sb.vy) * ny0) / d;
     // TC model: a ball struck again within TC_TIME of its last impact bounces elastically.
     const rapid = t - this.lastImpact[a.index]! < TC_TIME || t - this.lastImpact[b.index]! < TC_TIME;
-    const repeats = Math.max(this.countImpact(a, t), this.countImpact(b, t));
-    if (repeats > WEDGED_IMPACTS) {
-      // Still trading impacts at this instant: a ball wedged between others. Both stop.
-      for (const s of [sa, sb]) s.vx = s.vy = s.wx = s.wy = 0;
-    } else {
-      collideBalls(sa, sb, repeats > ELASTIC_IMPACTS ? this.plasticParams : rapid ? this.elasticParams : this.ballParams);
-    }
+    const kind = impactKind(Math.max(this.countImpact(a, t), this.countImpact(b, t)), rapid);
+    if (kind === 'wedged') stopBoth(sa, sb);
+    else collideBalls(sa, sb, kind === 'plastic' ? this.plasticParams : kind === 'elastic' ? this.elasticParams : this.ballParams);
     this.lastImpact[a.index] = t;
     this.lastImpact[b.index] = t;
     settle(sa, this.cloth);
@@ -324,9 +303,7 @@ class Simulation {
     if (!(speed > CONTACT_SPEED)) {
       // A pressed contact again at the same instant: the ball is wedged in a cluster whose pair
       // locks undo each other (a ball pressed from two sides). Both stop; only energy is lost.
-      if (this.lastPress[a.index] === t || this.lastPress[b.index] === t) {
-        for (const s of [sa, sb]) s.vx = s.vy = s.wx = s.wy = 0;
-      }
+      if (this.lastPress[a.index] === t || this.lastPress[b.index] === t) stopBoth(sa, sb);
       this.lastPress[a.index] = t;
       this.lastPress[b.index] = t;
     }
