@@ -6,6 +6,7 @@ import { createHash } from 'node:crypto';
 import type { Database } from 'better-sqlite3';
 import { Store, type RecordRow } from '../server/store.ts';
 import { newGame } from '../shared/rules/index.ts';
+import { generator } from '../shared/scenes/index.ts';
 
 export const KINDS = ['nineball', 'eightball', 'snooker', 'threecushion'] as const;
 export type Kind = (typeof KINDS)[number];
@@ -30,17 +31,8 @@ const DAY = 86_400_000;
 const SIGN_UP_SPAN = 300 * DAY;
 const MATCHES_FROM = 60 * DAY;
 
-/** mulberry32: a small seeded generator, uniform in [0, 1). */
-export function rng(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
+/** The project's seeded generator (mulberry32, shared/scenes), uniform in [0, 1). */
+export const rng = generator;
 
 export interface FillOptions {
   readonly players: number;
