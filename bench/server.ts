@@ -38,13 +38,13 @@ const fmt = (x: number | null, digits = 1): string => (x === null || !Number.isF
 
 function table(rows: readonly Row[]): string {
   const lines = [
-    '| rooms | sockets | shots/s | shot round trip p50 ms | p99 ms | errors | games finished | server CPU % | server RSS MB |',
-    '|---|---|---|---|---|---|---|---|---|',
+    '| rooms | sockets | shots/s | shot round trip p50 ms | p99 ms | yardstick p50 ms | p99 ms | errors | games finished | server CPU % | server RSS MB |',
+    '|---|---|---|---|---|---|---|---|---|---|---|',
   ];
   for (const { summary: s, cpuPercent, rssPeakMb } of rows) {
     const perSecond = s.seconds > 0 ? s.shots / s.seconds : NaN;
     lines.push(
-      `| ${s.rooms} | ${s.sockets} | ${fmt(perSecond)} | ${fmt(s.rttMs.p50)} | ${fmt(s.rttMs.p99)} | ${s.errors} | ${s.gamesFinished} | ${fmt(cpuPercent, 0)} | ${fmt(rssPeakMb, 0)} |`,
+      `| ${s.rooms} | ${s.sockets} | ${fmt(perSecond)} | ${fmt(s.rttMs.p50)} | ${fmt(s.rttMs.p99)} | ${fmt(s.yardstickMs.p50)} | ${fmt(s.yardstickMs.p99)} | ${s.errors} | ${s.gamesFinished} | ${fmt(cpuPercent, 0)} | ${fmt(rssPeakMb, 0)} |`,
     );
   }
   return lines.join('\n');
@@ -98,7 +98,8 @@ try {
     await sleep(2000); // the last level's rooms are left and closed before the next one
   }
   console.log(`# bench:server (${new Date().toISOString().slice(0, 10)}, Node ${process.version}, ${cpus().length} cores)\n`);
-  console.log(`Quick bots in a separate process, ${values.kind} games, ${seconds} s a level, ${thinkMs} ms thinking before each shot.\n`);
+  console.log(`Quick bots in a separate process, ${values.kind} games, ${seconds} s a level, ${thinkMs} ms thinking before each shot.`);
+  console.log('The yardstick, from the same process and under the same load: a request the server refuses at once (no simulation, no write), four a second.\n');
   console.log(table(rows));
   const extra = notes(rows);
   if (extra.length > 0) console.log(`\n${extra.join('\n')}`);

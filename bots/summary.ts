@@ -9,6 +9,8 @@ export interface Summary {
   readonly errors: number;
   /** Shot round trips; null when no shot came back. */
   readonly rttMs: { readonly p50: number | null; readonly p99: number | null };
+  /** The yardstick in the same run: round trips of a request the server refuses at once (no simulation, no write). */
+  readonly yardstickMs: { readonly p50: number | null; readonly p99: number | null };
   /** Wall time of the run, from start to the end of play. */
   readonly seconds: number;
   readonly errorCodes: Readonly<Record<string, number>>;
@@ -30,7 +32,7 @@ const round1 = (x: number | null): number | null => (x === null ? null : Math.ro
 
 export function summarize(
   stats: BotStats,
-  run: { rooms: number; sockets: number; seconds: number; setupFailures: number },
+  run: { rooms: number; sockets: number; seconds: number; setupFailures: number; yardstickMs: readonly number[] },
 ): Summary {
   return {
     rooms: run.rooms,
@@ -39,6 +41,7 @@ export function summarize(
     shots: stats.shots,
     errors: stats.errors,
     rttMs: { p50: round1(percentile(stats.rttMs, 50)), p99: round1(percentile(stats.rttMs, 99)) },
+    yardstickMs: { p50: round1(percentile(run.yardstickMs, 50)), p99: round1(percentile(run.yardstickMs, 99)) },
     seconds: Math.round(run.seconds * 100) / 100,
     errorCodes: stats.errorCodes,
     disconnects: stats.disconnects,

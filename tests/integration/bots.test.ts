@@ -36,6 +36,7 @@ describe('bots/main.ts', () => {
     expect(summary.shots).toBeGreaterThan(0);
     expect(summary.rttMs.p50).toBeGreaterThan(0);
     expect(summary.rttMs.p99).toBeGreaterThanOrEqual(summary.rttMs.p50!);
+    expect(summary.yardstickMs.p50).toBeGreaterThan(0);
     expect(summary.seconds).toBeGreaterThanOrEqual(10);
   }, 40_000);
 
