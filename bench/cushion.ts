@@ -10,7 +10,8 @@
 // settings impact by impact, so that all see the same machine state; an impact's time is its
 // median over the rounds. The table gives the median over impacts (the issue's measure) and the
 // mean (what a mix of impacts like the set costs), each with its ratio to the anchors'.
-import { cushionRebound, CUSHION_TOLERANCES } from '../shared/physics/index.ts';
+import { CUSHION_TOLERANCES } from '../shared/physics/index.ts';
+import { CushionKernel } from '../shared/physics/cushion/index.ts';
 import type { CushionParams, CushionState } from '../shared/physics/index.ts';
 import { benchGrid, benchRandom, benchRolling, PAPER, relError } from '../tests/support/cushion-cases.ts';
 import type { GridCase } from '../tests/support/cushion-cases.ts';
@@ -19,10 +20,12 @@ import { anchorRebound } from './cushion-anchor.ts';
 
 type Solver = (s: CushionState, p: CushionParams) => CushionState;
 
+// The kernel as the simulation calls it: one solver kept for many impacts (CushionKernel).
+const kernel = new CushionKernel();
 const settings: { name: string; solve: Solver }[] = [
   ...Object.entries(CUSHION_TOLERANCES).map(([name, tol]) => ({
     name: `kernel, ${name} (tolerance ${tol})`,
-    solve: ((s, p) => cushionRebound(s, p, { tolerance: name as keyof typeof CUSHION_TOLERANCES })) as Solver,
+    solve: ((s, p) => kernel.rebound(s, p, { tolerance: name as keyof typeof CUSHION_TOLERANCES })) as Solver,
   })),
   { name: 'anchors\' scheme (Euler, 100 steps, floor 0.001 N s)', solve: anchorRebound },
 ];

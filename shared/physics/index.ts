@@ -2,9 +2,8 @@
 // Diagnostics (the cushion impact's step counts and trace) have an entry of their own: diagnostics.ts.
 export { tableSpec, isTableName, TABLE_NAMES, cushionParamsOf } from './tables.ts';
 export type { TableName, TableSpec } from './tables.ts';
-export { cushionRebound } from './cushion.ts';
-export { CUSHION_TOLERANCES } from './cushion-types.ts';
-export type { CushionState, CushionParams, CushionOptions, CushionOutcome, CushionToleranceName } from './cushion-types.ts';
+export { cushionRebound, CUSHION_TOLERANCES } from './cushion/index.ts';
+export type { CushionState, CushionParams, CushionOptions, CushionOutcome, CushionToleranceName } from './cushion/index.ts';
 export { simulate } from './simulate.ts';
 export { sampleOutcome, energyAt } from './trajectory.ts';
 export type { BallAtTime } from './trajectory.ts';

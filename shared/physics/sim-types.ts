@@ -1,7 +1,7 @@
 // The simulation's public data: what goes in (a scene and a shot) and what comes out (an outcome).
 // Plain serialisable objects, the same on the server and in the browser.
 import type { Motion } from './ball-state.ts';
-import type { CushionToleranceName } from './cushion-types.ts';
+import type { CushionToleranceName } from './cushion/index.ts';
 import type { TableName } from './tables.ts';
 
 export interface SceneBall {

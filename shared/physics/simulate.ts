@@ -6,8 +6,8 @@ import { type BallSample, type BallState, type Motion } from './ball-state.ts';
 import { collideBalls, type BallBallParams } from './ball-collision.ts';
 import { emptySample, sampleAt, settle, startSegment, type ClothParams } from './cloth-motion.ts';
 import { impactKind, restAgainstCushion, settlePair, stopBoth, TC_TIME } from './contact-policy.ts';
-import { cushionRebound } from './cushion.ts';
-import type { CushionParams } from './cushion-types.ts';
+import { CushionKernel } from './cushion/index.ts';
+import type { CushionParams } from './cushion/index.ts';
 import { arcTime, ballBallTime, boxesOverlap, CONTACT_SPEED, pocketTime, segmentTime, sweptBox, type Path } from './detect.ts';
 import { EventQueue, Kind, type Prediction } from './event-queue.ts';
 import { hashFinalState } from './hash.ts';
@@ -66,6 +66,8 @@ class Simulation {
   private readonly boxB = new Float64Array(4);
   private readonly cushionBoxes: Float64Array[];
   private readonly pocketBoxes: Float64Array[];
+  /** One cushion solver for the shot's impacts. */
+  private readonly cushion = new CushionKernel();
 
   constructor(
     readonly table: TableSpec,
@@ -335,9 +337,9 @@ class Simulation {
     const wxf = s.wx * ny - s.wy * nx;
     const wyf = s.wx * nx + s.wy * ny;
     const input = { vx: vxf, vy: vyf, wx: wxf, wy: wyf, wz: s.wz };
-    let out: ReturnType<typeof cushionRebound>;
+    let out: ReturnType<CushionKernel['rebound']>;
     try {
-      out = cushionRebound(input, this.cushionParams, { tolerance: this.cushionTol });
+      out = this.cushion.rebound(input, this.cushionParams, { tolerance: this.cushionTol });
     } catch (err) {
       throw new Error(`cushion impact of ball "${b.id}" on ${cushion.name} at t = ${t} s failed: ${(err as Error).message}; input ${JSON.stringify(input)}, params ${JSON.stringify(this.cushionParams)}`);
     }

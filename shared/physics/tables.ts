@@ -2,7 +2,7 @@
 // kilograms. The playing area is measured between the cushion noses; the origin is its centre,
 // x along the long side, y across, z up (right-handed); headings from +x, counter-clockwise.
 import type { ClothParams } from './cloth-motion.ts';
-import type { CushionParams } from './cushion-types.ts';
+import type { CushionParams } from './cushion/index.ts';
 import { buildOutline, type Cushion, type Pocket, type PocketShape } from './table-geometry.ts';
 
 export type TableName = 'pool-9ft' | 'snooker-12ft' | 'carom-match';

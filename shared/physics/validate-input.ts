@@ -1,7 +1,7 @@
 // Checks a scene and a shot before anything is simulated: every problem is a clear error that
 // names it, and nothing has been computed when it is thrown.
 import type { Scene, Shot, SimOptions } from './sim-types.ts';
-import { CUSHION_TOLERANCES } from './cushion-types.ts';
+import { CUSHION_TOLERANCES } from './cushion/index.ts';
 import { MISCUE_LIMIT, MiscueError } from './strike.ts';
 import { inConvexPolygon, penetratedCushion } from './table-geometry.ts';
 import { tableSpec, type TableSpec } from './tables.ts';

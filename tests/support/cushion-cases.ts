@@ -86,7 +86,7 @@ export function benchRandom(R: number, count = 528, seed = 2026): GridCase[] {
  * cushion hit in play: a ball struck on the cloth rolls within a metre or so), drawn from
  * `seed` with V0 0.05-5 m/s, α 0.5-89.5° and a little sidespin, k_S -0.5..0.5: the
  * benchmark's third set. From about 55° on, with little sidespin, the cushion slip passes
- * through or near zero in restitution, which the express path leaves to the solver.
+ * through or near zero in restitution.
  */
 export function benchRolling(R: number, count = 528, seed = 2027): GridCase[] {
   return uniformDraws(R, count, seed, 1, 0.5);

@@ -5,8 +5,7 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { cushionRebound } from '../../shared/physics/index.ts';
-import { cushionImpact } from '../../shared/physics/diagnostics.ts';
-import { MAX_STEPS } from '../../shared/physics/cushion-solver.ts';
+import { cushionImpact, MAX_STEPS } from '../../shared/physics/diagnostics.ts';
 import { referenceRebound } from '../support/cushion-reference.ts';
 import { legacyTableParams, PAPER, paperState, relError, TABLE_PARAMS } from '../support/cushion-cases.ts';
 import { issueImpact, issueRange, physicalParams } from '../support/cushion-arbitraries.ts';
@@ -56,9 +55,7 @@ describe('accuracy against the converged reference (default setting)', () => {
   });
 
   it('random draws over the range with random physical constants: error < 1e-5 V0', () => {
-    // Beyond the four sets of constants: the express path's step choice and its thresholds
-    // must hold for any table (a near miss of the table slip at 2% of the speed once put one
-    // such impact 8.9e-6 V0 off; cushion-express.ts, EXPRESS_SLIP_MIN).
+    // Beyond the four sets of constants: the step control and its thresholds must hold for any table.
     fc.assert(
       fc.property(
         physicalParams, issueRange.V0, issueRange.alpha, issueRange.kT, issueRange.kS,

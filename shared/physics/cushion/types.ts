@@ -27,32 +27,21 @@ export interface CushionParams {
   readonly muW: number;
 }
 
-/**
- * Named accuracy settings. Each is a local error tolerance of the integrator, relative to the
- * ball's speed; `docs/cushion.md` lists what each costs and the error it gives.
- */
+/** Named accuracy settings: local error tolerances relative to the ball's speed (docs/cushion.md). */
 export type CushionToleranceName = 'accurate' | 'balanced' | 'fast';
 
 export interface CushionOptions {
-  /**
-   * A named setting, or a number in [1e-12, 1e-2]: the per-step error tolerance relative to the
-   * ball's speed. Default 'accurate'.
-   */
+  /** A named setting, or a number in [1e-12, 1e-2]: the per-step tolerance. Default 'accurate'. */
   readonly tolerance?: CushionToleranceName | number;
 }
 
-/** How the impact ended (see docs/cushion.md, "Outcomes"). */
-export type CushionOutcome =
-  /** vy <= 0 on entry: no impact, the state is returned unchanged. */
-  | 'no-impact'
-  /** The restitution work reached e_e² times the compression work: the normal case. */
-  | 'restitution'
-  /**
-   * The restitution work can never reach its target: after compression the ball stopped receding
-   * from the cushion (vy back at 0 with the impulse pushing it in, or both contacts rolling).
-   * The kernel returns the state at that instant with vy = 0.
-   */
-  | 'stalled';
+/**
+ * How the impact ended: 'no-impact' (vy <= 0 on entry, the state returned unchanged);
+ * 'restitution' (the restitution work reached e_e² times the compression work: the normal
+ * case); 'stalled' (the ball stopped receding before that, vy back at 0 with the impulse pushing
+ * it in or both contacts rolling: the state at that instant, with vy = 0).
+ */
+export type CushionOutcome = 'no-impact' | 'restitution' | 'stalled';
 
 /** Tolerance of each named setting (relative local error per step). */
 export const CUSHION_TOLERANCES: Readonly<Record<CushionToleranceName, number>> = {

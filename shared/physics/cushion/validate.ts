@@ -1,6 +1,6 @@
 // Input checks for cushionRebound: every bad field throws a RangeError that names it.
-import type { CushionOptions, CushionParams, CushionState } from './cushion-types.ts';
-import { CUSHION_TOLERANCES } from './cushion-types.ts';
+import type { CushionOptions, CushionParams, CushionState } from './types.ts';
+import { CUSHION_TOLERANCES } from './types.ts';
 
 /** Smallest and largest numeric tolerance accepted. */
 export const MIN_TOLERANCE = 1e-12;
@@ -18,44 +18,19 @@ function checkFinite(name: string, field: string, value: unknown): void {
 
 export function validateState(state: CushionState): void {
   if (state === null || typeof state !== 'object') fail('state', 'must be an object', state);
-  if (!(Number.isFinite(state.vx) && Number.isFinite(state.vy) && Number.isFinite(state.wx) &&
-    Number.isFinite(state.wy) && Number.isFinite(state.wz))) {
-    checkFinite('state', 'vx', state.vx);
-    checkFinite('state', 'vy', state.vy);
-    checkFinite('state', 'wx', state.wx);
-    checkFinite('state', 'wy', state.wy);
-    checkFinite('state', 'wz', state.wz);
-  }
+  for (const field of ['vx', 'vy', 'wx', 'wy', 'wz'] as const) checkFinite('state', field, state[field]);
 }
 
 export function validateParams(params: CushionParams): void {
   if (params === null || typeof params !== 'object') fail('params', 'must be an object', params);
+  for (const field of ['M', 'R', 'h', 'ee', 'muS', 'muW'] as const) checkFinite('params', field, params[field]);
   const { M, R, h, ee, muS, muW } = params;
-  if (!(Number.isFinite(M) && Number.isFinite(R) && Number.isFinite(h) && Number.isFinite(ee) &&
-    Number.isFinite(muS) && Number.isFinite(muW))) {
-    checkFinite('params', 'M', M);
-    checkFinite('params', 'R', R);
-    checkFinite('params', 'h', h);
-    checkFinite('params', 'ee', ee);
-    checkFinite('params', 'muS', muS);
-    checkFinite('params', 'muW', muW);
-  }
   if (!(M > 0)) fail('params.M', 'must be positive', M);
   if (!(R > 0)) fail('params.R', 'must be positive', R);
   if (!(h > R && h < 2 * R)) fail('params.h', `must lie in (R, 2R) = (${R}, ${2 * R})`, h);
   if (!(ee >= 0 && ee <= 1)) fail('params.ee', 'must lie in [0, 1]', ee);
   if (!(muS >= 0)) fail('params.muS', 'must be non-negative', muS);
   if (!(muW >= 0)) fail('params.muW', 'must be non-negative', muW);
-}
-
-/** The RangeError for values that the entry point's check refused (cushion.ts), naming the first bad field. */
-export function throwInvalid(
-  vx: unknown, vy: unknown, wx: unknown, wy: unknown, wz: unknown,
-  M: unknown, R: unknown, h: unknown, ee: unknown, muS: unknown, muW: unknown,
-): never {
-  validateState({ vx, vy, wx, wy, wz } as CushionState);
-  validateParams({ M, R, h, ee, muS, muW } as CushionParams);
-  throw new RangeError('cushionRebound: invalid input'); // (not reached: one of the checks fails)
 }
 
 /** The numeric tolerance chosen by the options (default: 'accurate'). */
