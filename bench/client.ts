@@ -55,6 +55,23 @@ try {
   await page.waitForFunction(() => document.getElementById('replay-info')?.dataset.done === 'true', undefined, { timeout: 60_000 });
   const frames = (await page.evaluate(() => (window as unknown as { baizeFrames: number[] }).baizeFrames)).slice(1);
 
+  // The lab: time from a changed input to every figure, the rebound and the shot drawn again
+  // (the page's own measure, data-redraw-ms), for a constant (all figures and the shot) and for
+  // the incoming ball (Fig. 12 and the rebound only).
+  await page.goto(`${server.url}/lab`);
+  await page.waitForSelector('#fig12 svg');
+  const redraws = async (label: string, values: number[]): Promise<number[]> => {
+    const out: number[] = [];
+    for (const v of values) {
+      await page.getByRole('spinbutton', { name: label }).fill(String(v));
+      await page.waitForFunction((q) => new URL(location.href).searchParams.get(q.key) === q.v, { key: label === 'restitution' ? 'ee' : 'alpha', v: String(v) });
+      out.push(Number(await page.evaluate(() => document.getElementById('app')!.dataset.redrawMs)));
+    }
+    return out;
+  };
+  const labConstants = await redraws('restitution', Array.from({ length: 20 }, (_, i) => 0.5 + i * 0.02));
+  const labBall = await redraws('incidence', Array.from({ length: 20 }, (_, i) => 20 + i * 2));
+
   console.log(`# bench:client (${new Date().toISOString().slice(0, 10)}, Chromium headless, ${process.platform})\n`);
   console.log('## What a first visit loads (goal: under 100 KB gzipped)\n');
   console.log('| file | bytes | gzipped |');
@@ -65,6 +82,13 @@ try {
   console.log(`\nThe debug corpus page's bundle (dev.js, not loaded by the game) is ${dev.length.toLocaleString('en')} bytes, ${gzipSync(dev, { level: 9 }).length.toLocaleString('en')} gzipped.\n`);
   console.log(`## First contentful paint of the lobby over ${LOADS} fresh loads\n`);
   console.log(`median ${pct(paints, 50).toFixed(0)} ms, min ${Math.min(...paints).toFixed(0)} ms, max ${Math.max(...paints).toFixed(0)} ms\n`);
+  console.log('## The lab: a change redrawn (goal: within 50 ms), 20 changes each\n');
+  console.log('| change | median ms | p90 ms | max ms |');
+  console.log('|---|---|---|---|');
+  for (const [name, xs] of [['a constant (Figs. 9, 10, 12, the rebound, the shot)', labConstants], ['the incoming ball (Fig. 12, the rebound)', labBall]] as const) {
+    console.log(`| ${name} | ${pct(xs, 50).toFixed(1)} | ${pct(xs, 90).toFixed(1)} | ${Math.max(...xs).toFixed(1)} |`);
+  }
+  console.log('');
   console.log(`## Frame times while "${CORPUS[index]!.name}" animates (${frames.length} frames), against an empty loop\n`);
   console.log('| loop | frames | median ms | p95 ms | p99 ms | max ms | frames over 20 ms |');
   console.log('|---|---|---|---|---|---|---|');

@@ -2,6 +2,7 @@
 // links handled here so the page never reloads.
 import { h } from './dom.ts';
 import { Session } from './net/session.ts';
+import { mountLab } from './pages/lab.ts';
 import { mountLeaderboard } from './pages/leaderboard.ts';
 import { mountLobby } from './pages/lobby.ts';
 import { mountMatch } from './pages/match.ts';
@@ -22,6 +23,7 @@ const ROUTES: [RegExp, Page][] = [
   [/^\/leaderboard$/, mountLeaderboard],
   [/^\/player\/([^/]+)$/, mountPlayer],
   [/^\/match\/([^/]+)$/, mountMatch],
+  [/^\/lab$/, mountLab],
 ];
 
 const root = document.getElementById('app')!;
@@ -45,10 +47,7 @@ function route(): void {
 
 function navigate(path: string): void {
   history.pushState(null, '', path);
-  session.onMessage((m) => {
-  if (m.type === 'player' && session.status === 'online') status.textContent = `Playing as ${m.player.name}`;
-});
-route();
+  route();
 }
 
 document.addEventListener('click', (e) => {

@@ -69,6 +69,14 @@ try {
   await page.goto(`${server.url}/leaderboard?kind=nineball`);
   await page.waitForSelector('table.board tbody tr');
   await page.screenshot({ path: join(OUT, 'leaderboard.png') });
+
+  // The physics lab: the controls and the rebound, then Fig. 9 and Fig. 12 with the phases.
+  await page.goto(`${server.url}/lab`);
+  await page.waitForSelector('#fig12 svg');
+  await page.getByRole('table', { name: 'Speed against error' }).locator('tbody tr').first().waitFor();
+  await page.screenshot({ path: join(OUT, 'lab.png') });
+  await page.locator('#fig9').screenshot({ path: join(OUT, 'lab-fig9.png') });
+  await page.locator('#fig12').screenshot({ path: join(OUT, 'lab-fig12.png') });
   console.log(`screenshots written to ${OUT}`);
 } finally {
   await browser.close();

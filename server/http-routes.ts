@@ -3,8 +3,8 @@ import type { IncomingMessage, ServerResponse } from 'node:http';
 import type { Api } from './api/routes.ts';
 import type { StaticFile } from './static-files.ts';
 
-/** Paths of the client's pages: the lobby, a room, practice, the leaderboard, a player, a match. */
-const PAGE = /^\/(?:|practice|leaderboard|(?:room|player|match)\/[A-Za-z0-9_-]{1,64})$/;
+/** Paths of the client's pages: the lobby, a room, practice, the leaderboard, a player, a match, the lab. */
+const PAGE = /^\/(?:|practice|leaderboard|lab|(?:room|player|match)\/[A-Za-z0-9_-]{1,64})$/;
 
 export interface Health {
   readonly ok: boolean;

@@ -1,7 +1,7 @@
 // The simulation's public data: what goes in (a scene and a shot) and what comes out (an outcome).
 // Plain serialisable objects, the same on the server and in the browser.
 import type { Motion } from './ball-state.ts';
-import type { CushionToleranceName } from './cushion/index.ts';
+import type { CushionParams, CushionToleranceName } from './cushion/index.ts';
 import type { TableName } from './tables.ts';
 
 export interface SceneBall {
@@ -35,6 +35,14 @@ export interface SimOptions {
   readonly rootTolerance?: number;
   /** Accuracy setting of the cushion impacts (see cushionRebound). Default 'accurate', the kernel's own. */
   readonly cushionTolerance?: CushionToleranceName | number;
+  /**
+   * Physical constants of the cushion impacts for this call (the physics lab): each field given
+   * replaces the table's own (cushionParamsOf) in the cushion kernel only; the others keep the
+   * table's. They change the cushion impacts only, not the ball's geometry (contacts, pockets) or
+   * its motion on the cloth: a different R or muS here is the kernel's, not the table's. A field
+   * set to undefined counts as not given. Default: the table's constants, bit for bit.
+   */
+  readonly cushion?: Partial<CushionParams>;
 }
 
 export type EventKind = 'ball' | 'cushion' | 'pocket' | 'motion';

@@ -13,7 +13,7 @@ import { EventQueue, Kind, type Prediction } from './event-queue.ts';
 import { hashFinalState } from './hash.ts';
 import type { FinalBall, Outcome, PathSegment, Scene, Shot, SimEvent, SimOptions } from './sim-types.ts';
 import { strikeBall } from './strike.ts';
-import { clothParamsOf, cushionParamsOf, type TableSpec } from './tables.ts';
+import { clothParamsOf, type TableSpec } from './tables.ts';
 import { validateOptions, validateScene, validateShot } from './validate-input.ts';
 
 /** Events per ball beyond which the loop is broken, with an error, never a silent answer. */
@@ -44,7 +44,6 @@ class Simulation {
   readonly segments: PathSegment[][];
   readonly cloth: ClothParams;
   readonly ballParams: BallBallParams;
-  readonly cushionParams: CushionParams;
   readonly elasticParams: BallBallParams;
   readonly plasticParams: BallBallParams;
   private readonly lastImpact: number[];
@@ -74,6 +73,8 @@ class Simulation {
     scene: Scene,
     readonly rootTol: number,
     readonly cushionTol: SimOptions['cushionTolerance'],
+    /** The cushion kernel's constants: the table's, or the caller's (SimOptions.cushion). */
+    readonly cushionParams: CushionParams,
   ) {
     this.R = table.ballRadius;
     this.cloth = clothParamsOf(table);
@@ -84,7 +85,6 @@ class Simulation {
     this.nextOwn = scene.balls.map(() => Infinity);
     this.impactsNow = scene.balls.map(() => 0);
     this.lastPress = scene.balls.map(() => -Infinity);
-    this.cushionParams = cushionParamsOf(table);
     this.balls = scene.balls.map((b, index) => ({
       id: b.id,
       index,
@@ -336,7 +336,11 @@ class Simulation {
     const vyf = s.vx * nx + s.vy * ny;
     const wxf = s.wx * ny - s.wy * nx;
     const wyf = s.wx * nx + s.wy * ny;
-    const input = { vx: vxf, vy: vyf, wx: wxf, wy: wyf, wz: s.wz };
+    // A cushion radius given per call (options.cushion.R) is the model's: the spins go in and out
+    // at the same surface speeds R ω, so that the ball's energy on the cloth (its own R) is the
+    // model's, which never grows.
+    const k = this.cushionParams.R === this.R ? 1 : this.R / this.cushionParams.R;
+    const input = k === 1 ? { vx: vxf, vy: vyf, wx: wxf, wy: wyf, wz: s.wz } : { vx: vxf, vy: vyf, wx: wxf * k, wy: wyf * k, wz: s.wz * k };
     let out: ReturnType<CushionKernel['rebound']>;
     try {
       out = this.cushion.rebound(input, this.cushionParams, { tolerance: this.cushionTol });
@@ -345,6 +349,11 @@ class Simulation {
     }
     s.vx = out.vx * ny + out.vy * nx;
     s.vy = -out.vx * nx + out.vy * ny;
+    if (k !== 1) {
+      out.wx /= k;
+      out.wy /= k;
+      out.wz /= k;
+    }
     s.wx = out.wx * ny + out.wy * nx;
     s.wy = -out.wx * nx + out.wy * ny;
     s.wz = out.wz;
@@ -379,13 +388,14 @@ class Simulation {
  * Plays a shot on a scene of balls at rest and returns where they end, every event in time order,
  * the time until all rest, a hash of the final state and every ball's path. Bad input throws a
  * SimulationInputError (a RangeError) naming the problem before anything is simulated; a tip
- * offset beyond half the radius throws a MiscueError.
+ * offset beyond half the radius throws a MiscueError. `options.cushion` replaces constants of the
+ * cushion impacts only (see SimOptions).
  */
 export function simulate(scene: Scene, shot: Shot, options?: SimOptions): Outcome {
   const table = validateScene(scene);
   validateShot(scene, shot);
-  const { rootTolerance, cushionTolerance } = validateOptions(options);
-  const sim = new Simulation(table, scene, rootTolerance, cushionTolerance);
+  const { rootTolerance, cushionTolerance, cushionParams } = validateOptions(options, table);
+  const sim = new Simulation(table, scene, rootTolerance, cushionTolerance, cushionParams);
   sim.strike(shot);
   const duration = sim.run();
   return sim.finish(duration);

@@ -1,10 +1,10 @@
 // Checks a scene and a shot before anything is simulated: every problem is a clear error that
 // names it, and nothing has been computed when it is thrown.
 import type { Scene, Shot, SimOptions } from './sim-types.ts';
-import { CUSHION_TOLERANCES } from './cushion/index.ts';
+import { CUSHION_TOLERANCES, type CushionParams } from './cushion/index.ts';
 import { MISCUE_LIMIT, MiscueError } from './strike.ts';
 import { inConvexPolygon, penetratedCushion } from './table-geometry.ts';
-import { tableSpec, type TableSpec } from './tables.ts';
+import { cushionParamsOf, tableSpec, type TableSpec } from './tables.ts';
 
 /** Overlap between balls, or between a ball and a cushion, tolerated as touching (m). */
 export const CONTACT_TOLERANCE = 1e-9;
@@ -83,7 +83,38 @@ export function validateShot(scene: Scene, shot: Shot): void {
   }
 }
 
-export function validateOptions(options: SimOptions | undefined): { rootTolerance: number; cushionTolerance: SimOptions['cushionTolerance'] } {
+const CUSHION_KEYS = ['M', 'R', 'h', 'ee', 'muS', 'muW'] as const;
+
+/** The table's cushion constants with the given overrides, checked as merged (h depends on R). */
+function cushionParams(table: TableSpec, overrides: SimOptions['cushion']): CushionParams {
+  const base = cushionParamsOf(table);
+  if (overrides === undefined) return base;
+  if (typeof overrides !== 'object' || overrides === null || Array.isArray(overrides)) {
+    fail(`options.cushion must be an object of cushion constants { ${CUSHION_KEYS.join(', ')} }, got ${String(overrides)}`);
+  }
+  for (const key of Object.keys(overrides)) {
+    if (!(CUSHION_KEYS as readonly string[]).includes(key)) fail(`options.cushion.${key} is not a cushion constant: use ${CUSHION_KEYS.join(', ')}`);
+  }
+  const merged = { ...base };
+  // Field by field: a field set to undefined keeps the table's value, as a spread would not.
+  for (const key of CUSHION_KEYS) {
+    if (overrides[key] !== undefined) merged[key] = finite(overrides[key], `options.cushion.${key}`);
+  }
+  const { M, R, h, ee, muS, muW } = merged;
+  if (!(M > 0)) fail(`options.cushion.M must be > 0 kg, got ${M}`);
+  if (!(R > 0)) fail(`options.cushion.R must be > 0 m, got ${R}`);
+  if (!(h > R && h < 2 * R)) {
+    fail(`options.cushion.h must be in (R, 2R) = (${R}, ${2 * R}) m, got ${h}${overrides.h === undefined ? " (the table's)" : ''}`);
+  }
+  if (!(ee >= 0 && ee <= 1)) fail(`options.cushion.ee must be in [0, 1], got ${ee}`);
+  if (!(muS >= 0)) fail(`options.cushion.muS must be >= 0, got ${muS}`);
+  if (!(muW >= 0)) fail(`options.cushion.muW must be >= 0, got ${muW}`);
+  return merged;
+}
+
+export function validateOptions(
+  options: SimOptions | undefined, table: TableSpec,
+): { rootTolerance: number; cushionTolerance: SimOptions['cushionTolerance']; cushionParams: CushionParams } {
   const rootTolerance = options?.rootTolerance ?? 1e-12;
   if (typeof rootTolerance !== 'number' || !(rootTolerance >= 1e-15 && rootTolerance <= 1e-3)) {
     fail(`options.rootTolerance must be in [1e-15, 1e-3] s, got ${String(rootTolerance)}`);
@@ -94,5 +125,5 @@ export function validateOptions(options: SimOptions | undefined): { rootToleranc
   if (!named && !numeric) {
     fail(`options.cushionTolerance must be one of ${Object.keys(CUSHION_TOLERANCES).join(', ')} or a number in [1e-12, 1e-2], got ${String(cushionTolerance)}`);
   }
-  return { rootTolerance, cushionTolerance };
+  return { rootTolerance, cushionTolerance, cushionParams: cushionParams(table, options?.cushion) };
 }

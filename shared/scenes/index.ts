@@ -3,3 +3,5 @@ export { CORPUS, corpusCases } from './corpus.ts';
 export type { CorpusCase, CorpusTag } from './corpus.ts';
 export { aim, ghost, shot, onRail, frozenLine, generator, randomBalls } from './build.ts';
 export type { Point } from './build.ts';
+export { PAPER, paperState, PUBLISHED } from './cushion-paper.ts';
+export type { PublishedRebound } from './cushion-paper.ts';

@@ -1,29 +1,18 @@
-import { join } from 'node:path';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import type { Browser } from 'playwright-core';
 import { simulate } from '../../shared/physics/index.ts';
 import { CORPUS } from '../../shared/scenes/index.ts';
-import { chromiumAvailable, launchChromium } from '../support/browser.ts';
-import { startServerProcess, tempDir, type ServerProcess } from '../support/server-process.ts';
+import { chromiumAvailable, serverAndChromium } from '../support/browser.ts';
 
 describe.skipIf(!chromiumAvailable())('the home page in Chromium', () => {
-  let browser: Browser;
-  let server: ServerProcess;
-  beforeAll(async () => {
-    server = await startServerProcess({ BAIZE_DB: join(tempDir(), 'baize.db') });
-    browser = await launchChromium();
-  });
-  afterAll(async () => {
-    await browser?.close();
-    await server?.stop();
-  });
+  const env = serverAndChromium();
 
   it('opens the lobby as a guest at once: a made-up name, the token kept in the browser', async () => {
-    const page = await browser.newPage();
+    const page = await env.browser.newPage();
     const errors: string[] = [];
     page.on('pageerror', (err) => errors.push(err.message));
     page.on('console', (m) => (m.type() === 'error' ? errors.push(m.text()) : undefined));
-    await page.goto(`${server.url}/`);
+    await page.goto(`${env.server.url}/`);
     expect(await page.title()).toBe('baize');
     expect(await page.locator('h1').textContent()).toBe('baize');
     const status = page.locator('#server-status');
@@ -36,10 +25,10 @@ describe.skipIf(!chromiumAvailable())('the home page in Chromium', () => {
   });
 
   it('replays a corpus shot in the browser with the same hash as the server computes', async () => {
-    const page = await browser.newPage();
+    const page = await env.browser.newPage();
     const errors: string[] = [];
     page.on('pageerror', (err) => errors.push(err.message));
-    await page.goto(`${server.url}/dev.html`);
+    await page.goto(`${env.server.url}/dev.html`);
     const index = CORPUS.findIndex((c) => c.name === 'snooker black into the corner');
     const c = CORPUS[index]!;
     await page.selectOption('#replay-case', String(index));

@@ -2,7 +2,10 @@
 // Without it the browser tests skip with a message, unless BAIZE_REQUIRE_BROWSER=1 (CI) makes
 // them mandatory.
 import { existsSync } from 'node:fs';
+import { join } from 'node:path';
 import { chromium, type Browser } from 'playwright-core';
+import { afterAll, beforeAll } from 'vitest';
+import { startServerProcess, tempDir, type ServerProcess } from './server-process.ts';
 
 export const CHROMIUM_PATH = '/usr/bin/chromium';
 export const REQUIRE_BROWSER = process.env.BAIZE_REQUIRE_BROWSER === '1';
@@ -25,4 +28,29 @@ export async function launchChromium(): Promise<Browser> {
     // This machine has no network beyond loopback: keep Chromium from reaching out.
     args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync'],
   });
+}
+
+/**
+ * For a describe block: a real server on a fresh database and Chromium, started before its tests
+ * and stopped after; read them through the returned getters inside the tests.
+ */
+export function serverAndChromium(): { readonly browser: Browser; readonly server: ServerProcess } {
+  let browser: Browser | undefined;
+  let server: ServerProcess | undefined;
+  beforeAll(async () => {
+    server = await startServerProcess({ BAIZE_DB: join(tempDir(), 'baize.db') });
+    browser = await launchChromium();
+  });
+  afterAll(async () => {
+    await browser?.close();
+    await server?.stop();
+  });
+  return {
+    get browser() {
+      return browser!;
+    },
+    get server() {
+      return server!;
+    },
+  };
 }

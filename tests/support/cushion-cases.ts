@@ -1,10 +1,9 @@
 // Impacts defined once, shared by the cushion tests, the benchmark and the figures.
 import { cushionParamsOf, tableSpec } from '../../shared/physics/index.ts';
-import { generator } from '../../shared/scenes/index.ts';
+import { generator, PAPER, paperState } from '../../shared/scenes/index.ts';
 import type { CushionParams, CushionState, TableName } from '../../shared/physics/index.ts';
 
-/** Mathavan et al. 2010's constants (snooker): M, R, h = 7R/5, e_e, μ_s (table), μ_w (cushion). */
-export const PAPER: CushionParams = { M: 0.1406, R: 0.02625, h: 0.02625 * 1.4, ee: 0.98, muS: 0.212, muW: 0.14 };
+export { PAPER, paperState } from '../../shared/scenes/index.ts';
 
 /** Each table's own cushion-impact constants, as the simulation uses them (cushionParamsOf). */
 export function tableParams(name: TableName): CushionParams {
@@ -29,17 +28,6 @@ export const TABLE_PARAMS: readonly (readonly [string, CushionParams])[] = [
   ['snooker-12ft', tableParams('snooker-12ft')],
   ['carom-match', tableParams('carom-match')],
 ];
-
-/**
- * The paper's initial state: speed V0 at incidence α (degrees from the cushion line, 90 is
- * head-on), topspin ω_T = kT V0 / R about the horizontal axis across the path, sidespin
- * ω_S = kS V0 / R about z: v = (V0 cos α, V0 sin α, 0), ω = (-ω_T sin α, ω_T cos α, ω_S).
- */
-export function paperState(V0: number, alphaDeg: number, kT: number, kS: number, R: number): CushionState {
-  const a = (alphaDeg * Math.PI) / 180;
-  const wT = (kT * V0) / R;
-  return { vx: V0 * Math.cos(a), vy: V0 * Math.sin(a), wx: -wT * Math.sin(a), wy: wT * Math.cos(a), wz: (kS * V0) / R };
-}
 
 export interface GridCase {
   readonly V0: number;

@@ -1,5 +1,6 @@
 // A small hand-written SVG line-chart writer (no dependency): panels with axes, ticks, units,
-// a legend and polylines, laid out side by side in one figure.
+// a legend, polylines, marked points with their numbers on hover and shaded spans, laid out side
+// by side in one figure. Used by the lab page and by `npm run figures` (docs/figures).
 
 export interface Series {
   readonly name: string;
@@ -18,6 +19,24 @@ export interface Panel {
   readonly y?: readonly [number, number];
   /** Legend corner inside the plot: top/bottom, left/right (default top right). */
   readonly legend?: 'tl' | 'tr' | 'bl' | 'br';
+  /** Points drawn as circles, their label shown on hover (an SVG title). */
+  readonly marks?: readonly Mark[];
+  /** Shaded spans of x, labelled at their top. */
+  readonly spans?: readonly Span[];
+}
+
+export interface Mark {
+  readonly x: number;
+  readonly y: number;
+  readonly color: string;
+  readonly label: string;
+}
+
+export interface Span {
+  readonly from: number;
+  readonly to: number;
+  readonly label: string;
+  readonly color: string;
 }
 
 export const PALETTE = ['#1f77b4', '#d62728', '#2ca02c', '#9467bd', '#ff7f0e', '#8c564b'] as const;
@@ -58,8 +77,8 @@ function fmt(v: number): string {
 }
 
 function panelSvg(p: Panel, ox: number, oy: number): string {
-  const xs = p.series.flatMap((s) => s.points.map((q) => q[0]));
-  const ys = p.series.flatMap((s) => s.points.map((q) => q[1]));
+  const xs = [...p.series.flatMap((s) => s.points.map((q) => q[0])), ...(p.marks ?? []).map((m) => m.x)];
+  const ys = [...p.series.flatMap((s) => s.points.map((q) => q[1])), ...(p.marks ?? []).map((m) => m.y)];
   const [x0, x1] = p.x ?? range(xs);
   const [y0, y1] = p.y ?? range(ys);
   const w = PANEL_W - MARGIN.left - MARGIN.right;
@@ -68,6 +87,13 @@ function panelSvg(p: Panel, ox: number, oy: number): string {
   const Y = (v: number): number => MARGIN.top + h - ((v - y0) / (y1 - y0)) * h;
   const out: string[] = [`<g transform="translate(${ox},${oy})">`];
   out.push(`<text x="${MARGIN.left + w / 2}" y="20" text-anchor="middle" font-size="14" font-weight="bold">${esc(p.title)}</text>`);
+  for (const sp of p.spans ?? []) {
+    const a = Math.max(X(sp.from), MARGIN.left);
+    const b = Math.min(X(sp.to), MARGIN.left + w);
+    if (!(b > a)) continue;
+    out.push(`<rect data-span="${esc(sp.label)}" x="${a.toFixed(1)}" y="${MARGIN.top}" width="${(b - a).toFixed(1)}" height="${h}" fill="${sp.color}" fill-opacity="0.12"><title>${esc(sp.label)}</title></rect>`);
+    out.push(`<text x="${((a + b) / 2).toFixed(1)}" y="${MARGIN.top + h - 6}" text-anchor="middle" font-size="9" fill="#555">${esc(sp.label)}</text>`);
+  }
   out.push(`<rect x="${MARGIN.left}" y="${MARGIN.top}" width="${w}" height="${h}" fill="none" stroke="#333"/>`);
   for (const t of niceTicks(x0, x1)) {
     const x = X(t).toFixed(1);
@@ -87,7 +113,10 @@ function panelSvg(p: Panel, ox: number, oy: number): string {
   for (const s of p.series) {
     const pts = s.points.map(([a, b]) => `${X(a).toFixed(2)},${Y(b).toFixed(2)}`).join(' ');
     const dash = s.dash ? ` stroke-dasharray="${s.dash}"` : '';
-    out.push(`<polyline clip-path="url(#clip${ox}_${oy})" fill="none" stroke="${s.color}" stroke-width="1.8"${dash} points="${pts}"/>`);
+    out.push(`<polyline data-series="${esc(s.name)}" clip-path="url(#clip${ox}_${oy})" fill="none" stroke="${s.color}" stroke-width="1.8"${dash} points="${pts}"/>`);
+  }
+  for (const m of p.marks ?? []) {
+    out.push(`<circle data-mark="${esc(m.label)}" cx="${X(m.x).toFixed(2)}" cy="${Y(m.y).toFixed(2)}" r="4.5" fill="white" stroke="${m.color}" stroke-width="2"><title>${esc(m.label)}</title></circle>`);
   }
   // Legend in a corner inside the plot.
   const corner = p.legend ?? 'tr';
