@@ -55,7 +55,10 @@ async function match(a: Seat, b: Seat, loser: Seat, fouls?: number): Promise<num
     await until(seat, room, (x) => x.stateId === r.stateId);
     if (fouls === undefined) await playTurn(seat, room);
     else await ask(seat, { type: 'shot', room, stateId: r.stateId, shot: { ball: 'cue', heading: Math.PI, speed: 0.05, side: 0, top: 0 } });
-    await until(a, room, (x) => x.stateId > r.stateId);
+    // A shot that wins the game comes as two messages: the shot (its game won, the status still
+    // `playing` in a's view) and then the room's new state. Wait for both, or the loop reads
+    // `playing` between them and plays on in a finished game.
+    await until(a, room, (x) => x.stateId > r.stateId && (x.status !== 'playing' || x.game?.winner === null));
   }
   if (a.rooms.get(room)!.status === 'playing') await ask(loser, { type: 'concede', room });
   await until(a, room, (r) => r.status === 'over');

@@ -92,7 +92,9 @@ export async function playToEnd(a: Seat, b: Seat, roomId: string, maxShots = 200
     const seat = r.game!.turn === a.player.id ? a : b;
     await until(seat, roomId, (x) => x.stateId === r.stateId);
     await playTurn(seat, roomId);
-    await until(a, roomId, (x) => x.stateId >= seat.rooms.get(roomId)!.stateId);
+    // A shot that ends a game comes as two messages (the shot, then the room's new state): wait
+    // for both, or the loop reads `playing` between them and plays on in a finished game.
+    await until(a, roomId, (x) => x.stateId >= seat.rooms.get(roomId)!.stateId && (x.status !== 'playing' || x.game?.winner === null));
     await onShot?.(shots + 1);
   }
   return shots;
