@@ -4,3 +4,4 @@
 export { cushionImpact, cushionTrace } from './cushion/index.ts';
 export { MAX_STEPS } from './cushion/control.ts';
 export type { CushionStateOut, CushionImpact, CushionTracePoint } from './cushion/index.ts';
+export { simulateOn } from './simulate.ts';

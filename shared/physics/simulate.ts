@@ -20,7 +20,7 @@ import { validateOptions, validateScene, validateShot } from './validate-input.t
 const EVENTS_PER_BALL_LIMIT = 2000;
 
 /** The bounding boxes of a table's cushions and pockets, built once per table. */
-const BOXES = new Map<TableSpec, { cushions: Float64Array[]; pockets: Float64Array[] }>();
+const BOXES = new WeakMap<TableSpec, { cushions: Float64Array[]; pockets: Float64Array[] }>();
 function tableBoxes(table: TableSpec): { cushions: Float64Array[]; pockets: Float64Array[] } {
   let boxes = BOXES.get(table);
   if (!boxes) {
@@ -392,7 +392,16 @@ class Simulation {
  * cushion impacts only (see SimOptions).
  */
 export function simulate(scene: Scene, shot: Shot, options?: SimOptions): Outcome {
-  const table = validateScene(scene);
+  return simulateOn(validateScene(scene), scene, shot, options);
+}
+
+/**
+ * simulate() on a table spec of the caller's: the registered table's geometry with other physical
+ * constants (cloth, ball-ball, cushion), for fitting the constants to real shots (npm run
+ * fidelity). The scene is checked against its registered table, whose geometry this must share.
+ */
+export function simulateOn(table: TableSpec, scene: Scene, shot: Shot, options?: SimOptions): Outcome {
+  validateScene(scene);
   validateShot(scene, shot);
   const { rootTolerance, cushionTolerance, cushionParams } = validateOptions(options, table);
   const sim = new Simulation(table, scene, rootTolerance, cushionTolerance, cushionParams);

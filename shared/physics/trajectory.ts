@@ -3,7 +3,7 @@
 import type { BallSample, Motion } from './ball-state.ts';
 import { emptySample, sampleAt, specificEnergy, type ClothParams } from './cloth-motion.ts';
 import type { Outcome, PathSegment } from './sim-types.ts';
-import { clothParamsOf, tableSpec } from './tables.ts';
+import { clothParamsOf, tableSpec, type TableSpec } from './tables.ts';
 
 export interface BallAtTime extends BallSample {
   readonly id: string;
@@ -26,9 +26,12 @@ function segmentAt(segments: readonly PathSegment[], t: number): PathSegment {
   return segments[lo]!;
 }
 
-/** Every ball's position, velocity and spin at time t (s) of the outcome. */
-export function sampleOutcome(outcome: Outcome, t: number): BallAtTime[] {
-  const p = clothParams(outcome.table);
+/**
+ * Every ball's position, velocity and spin at time t (s) of the outcome; `table` when it was
+ * simulated on constants of the caller's (simulateOn).
+ */
+export function sampleOutcome(outcome: Outcome, t: number, table?: TableSpec): BallAtTime[] {
+  const p = table === undefined ? clothParams(outcome.table) : clothParamsOf(table);
   return outcome.paths.map((path) => {
     const s = segmentAt(path.segments, t);
     return { id: path.id, motion: s.t0 <= t ? s.motion : 'rest', ...sampleAt(s, Math.max(0, t - s.t0), p, emptySample()) };

@@ -247,8 +247,8 @@ export class CushionSolver {
       if (next === LEFT_CONE) {
         // A stuck contact left its cone inside the step: the step ends there.
         const vyBefore = y[1]!;
-        rk.denseAll(this.leaving, y);
-        this.p += this.leaving * step;
+        rk.denseAll(this.coneExit, y);
+        this.p += this.coneExit * step;
         if (this.backAtZero(vyBefore)) return;
         this.leaveStick();
         model.derivative(y, rk.k1);
@@ -273,11 +273,11 @@ export class CushionSolver {
   }
 
   /** Where a stuck contact left its cone in the accepted step (a fraction of it). */
-  private leaving = -0;
+  private coneExit = -0;
 
   /**
    * The events of an accepted step, located on its continuous extension in order: a stuck
-   * contact leaving its cone (LEFT_CONE, at `leaving`), the end of compression, the work target,
+   * contact leaving its cone (LEFT_CONE, at `coneExit`), the end of compression, the work target,
    * vy back at zero. ENDED when the impact ended, AGAIN when y moved to an event and the next step
    * starts there, ACCEPTED when the step is taken whole.
    */
@@ -289,7 +289,7 @@ export class CushionSolver {
     if ((model.modeI === STICK || model.modeC === STICK) && model.stickMargin(rk.y1) > 0) {
       this.prepare();
       stop = this.stickRoot(0, 1);
-      this.leaving = stop;
+      this.coneExit = stop;
       left = true;
     }
     let vyBack = false;

@@ -55,7 +55,10 @@ describe('simulate with the cushion constants of the call (options.cushion)', ()
     }
   });
 
-  it('with a lower restitution, a ball leaves its first cushion slower and the table holds less energy', () => {
+  it('with a lower restitution, a ball that meets its first cushion at 45° or more leaves it slower, and the table holds less energy', () => {
+    // (Nearer the grazing, a lower restitution also means less friction at the cushion, and the
+    // ball can leave faster.)
+    let checked = 0;
     for (const c of CAROM) {
       expect(own(c).ee).toBeGreaterThan(0.5);
       const base = run(c);
@@ -64,14 +67,17 @@ describe('simulate with the cushion constants of the call (options.cushion)', ()
       // Everything up to the first cushion impact is the same; that impact then differs.
       const i = base.events.findIndex((e) => e.kind === 'cushion');
       expect(soft.events.slice(0, i + 1), c.name).toEqual(base.events.slice(0, i + 1));
-      const { t, balls: [id] } = base.events[i]!;
-      const speedAfter = (o: Outcome): number => {
-        const b = sampleOutcome(o, t).find((x) => x.id === id)!;
+      const { t, balls: [id], speed } = base.events[i]!;
+      const speedAt = (o: Outcome, at: number): number => {
+        const b = sampleOutcome(o, at).find((x) => x.id === id)!;
         return Math.hypot(b.vx, b.vy);
       };
-      expect(speedAfter(soft), c.name).toBeLessThan(speedAfter(base));
+      if (!(speed! >= Math.SQRT1_2 * speedAt(base, t - 1e-9))) continue;
+      checked++;
+      expect(speedAt(soft, t), c.name).toBeLessThan(speedAt(base, t));
       expect(energyAt(soft, t), c.name).toBeLessThan(energyAt(base, t));
     }
+    expect(checked).toBeGreaterThanOrEqual(2);
   });
 
   it('accepts the bounds: ee 0 and 1, no friction', () => {
