@@ -3,6 +3,7 @@
 // docs/fidelity.json written (the scenes and strikes under the fitted constants), the figures
 // printed as tables and the worst and typical shots drawn into docs/figures. See docs/fidelity.md.
 //   --fit-shots N   training shots the constants' search refits for each trial (default 40)
+//   --steps a,b     the search's relative step sizes, one pass each (default 0.3,0.15)
 //   --shipped       no search: the strikes on the shipped constants (after shipping a search's
 //                   result, this writes docs/fidelity.json for the constants as shipped: a
 //                   three-cushion shot is chaotic, and a constant one bit off moves some shots far)
@@ -21,7 +22,7 @@ import {
 // (npm runs scripts from the repository's root; the bundle itself lives in a temporary folder.)
 const ROOT = process.cwd();
 const DEFAULT_DATA = join(ROOT, '..', 'shared', 'data', 'three-cushion-trajectories.json');
-const { values, positionals } = parseArgs({ allowPositionals: true, options: { 'fit-shots': { type: 'string', default: '40' }, shipped: { type: 'boolean', default: false }, shots: { type: 'string' } } });
+const { values, positionals } = parseArgs({ allowPositionals: true, options: { 'fit-shots': { type: 'string', default: '40' }, shipped: { type: 'boolean', default: false }, steps: { type: 'string', default: '0.3,0.15' }, shots: { type: 'string' } } });
 const path = positionals[0] ?? DEFAULT_DATA;
 if (!existsSync(path)) {
   console.error(`fidelity: no tracked shots at ${path}. Pass the path of three-cushion-trajectories.json (tailuge/billiards' dist/fit/trajectories.json) as the first argument.`);
@@ -63,7 +64,7 @@ if (!values.shipped) {
   // training half (every other even id); the whole training half is then refitted on its result.
   const sample = train.filter((_, i) => i % 2 === 0).slice(0, Number(values['fit-shots']));
   log(`searching the constants on ${sample.length} training shots`);
-  const fit = fitTable(sample, sample.map((s) => beforeByShot.get(s.id)!.strike), table, [0.3, 0.15], (m) => log(m));
+  const fit = fitTable(sample, sample.map((s) => beforeByShot.get(s.id)!.strike), table, values.steps.split(',').map(Number), (m) => log(m));
   table = fit.table;
   log(`constants ${constantsOf(table).map((v) => v.toPrecision(4)).join(', ')}; mean capped RMS on the sample ${cm(fit.mean)} cm`);
 }
