@@ -132,10 +132,10 @@ const CAROM = table({
   ballRadius: 0.03075,
   ballMass: 0.21,
   g: G,
-  cloth: { muSlide: 0.26, muRoll: 0.004958311163877231, spinDecel: 5.95 },
+  cloth: { muSlide: 0.221, muRoll: 0.004958311163877231, spinDecel: 5.0575 },
   // Alciatore's friction law, 1.3 times.
   ballBall: { ...PHENOLIC, frictionA: 0.0129363, frictionB: 0.1404 },
-  cushion: { height: 0.037, restitution: 0.93, friction: 0.2093 },
+  cushion: { height: 0.037, restitution: 0.93, friction: 0.240695 },
 });
 
 const TABLES: Readonly<Record<TableName, TableSpec>> = {
