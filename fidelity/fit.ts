@@ -79,19 +79,19 @@ export function simulateShot(s: TrackedShot, scene: Scene, st: Strike, table: Ta
   }
 }
 
-/** Squared distances between the simulated and tracked balls at every tracked time >= t0. */
-export function residuals(s: TrackedShot, out: Outcome, t0: number, table: TableSpec): number[] {
+/** Squared distances between the simulated and tracked balls at every tracked time t >= t0. */
+export function residuals(s: TrackedShot, out: Outcome, t0: number, table: TableSpec): { t: number; d2: number }[] {
   const map = ballMap(s);
   const times = new Set<number>();
   for (const b of Object.values(s.balls)) for (const t of b.t) if (t >= t0) times.add(t);
   const at = new Map<number, Map<string, { x: number; y: number }>>();
   for (const t of times) at.set(t, new Map(sampleOutcome(out, t - t0, table).map((b) => [b.id, b])));
-  const r: number[] = [];
+  const r: { t: number; d2: number }[] = [];
   for (const [id, b] of Object.entries(s.balls)) {
     b.t.forEach((t, i) => {
       if (t < t0) return;
       const p = at.get(t)!.get(map[id]!)!;
-      r.push((p.x - b.x[i]!) ** 2 + (p.y - b.y[i]!) ** 2);
+      r.push({ t, d2: (p.x - b.x[i]!) ** 2 + (p.y - b.y[i]!) ** 2 });
     });
   }
   return r;
@@ -102,7 +102,7 @@ export function rmsError(s: TrackedShot, scene: Scene, st: Strike, table: TableS
   const out = simulateShot(s, scene, st, table);
   if (out === null) return REFUSED;
   const r = residuals(s, out, st.t0, table);
-  return r.length === 0 ? 0 : Math.sqrt(r.reduce((a, b) => a + b, 0) / r.length);
+  return r.length === 0 ? 0 : Math.sqrt(r.reduce((a, x) => a + x.d2, 0) / r.length);
 }
 
 /** A first guess from the cue ball's first frames: heading and speed of its first move. */
@@ -165,11 +165,6 @@ export function tableWith(base: TableSpec, c: readonly number[]): TableSpec | nu
   };
 }
 
-/** Per-shot RMS errors on a table, each strike given. */
-export function errors(shots: readonly TrackedShot[], strikes: readonly Strike[], table: TableSpec): number[] {
-  return shots.map((s, i) => rmsError(s, sceneOf(s), strikes[i]!, table));
-}
-
 export function percentile(xs: readonly number[], p: number): number {
   const s = [...xs].sort((a, b) => a - b);
   return s[Math.min(s.length - 1, Math.floor((p / 100) * s.length))]!;
@@ -182,18 +177,10 @@ export function percentile(xs: readonly number[], p: number): number {
  */
 export function errorByPhase(s: TrackedShot, out: Outcome, t0: number, table: TableSpec): { first: number; middle: number; late: number } {
   const contact = out.events.find((e) => e.kind === 'ball')?.t ?? Infinity;
-  const map = ballMap(s);
-  const sums = { first: [0, 0], middle: [0, 0], late: [0, 0] };
-  for (const [id, b] of Object.entries(s.balls)) {
-    b.t.forEach((t, i) => {
-      if (t < t0) return;
-      const p = sampleOutcome(out, t - t0, table).find((q) => q.id === map[id])!;
-      const d2 = (p.x - b.x[i]!) ** 2 + (p.y - b.y[i]!) ** 2;
-      const phase = t - t0 < contact ? sums.first : t - t0 < 3 ? sums.middle : sums.late;
-      phase[0]! += d2;
-      phase[1]! += 1;
-    });
-  }
-  const rms = (x: number[]): number => (x[1]! > 0 ? Math.sqrt(x[0]! / x[1]!) : NaN);
-  return { first: rms(sums.first), middle: rms(sums.middle), late: rms(sums.late) };
+  const r = residuals(s, out, t0, table);
+  const rms = (keep: (dt: number) => boolean): number => {
+    const xs = r.filter((x) => keep(x.t - t0));
+    return xs.length > 0 ? Math.sqrt(xs.reduce((a, x) => a + x.d2, 0) / xs.length) : NaN;
+  };
+  return { first: rms((dt) => dt < contact), middle: rms((dt) => dt >= contact && dt < 3), late: rms((dt) => dt >= contact && dt >= 3) };
 }

@@ -3,7 +3,7 @@
 export { DATA_SCALE, readShots, rollingDeceleration, toShot } from './data.ts';
 export type { Track, TrackedShot } from './data.ts';
 export {
-  ballMap, CONSTANTS, constantsOf, errorByPhase, errors, fitStrike, NOT_EXPRESSED, percentile, residuals, rmsError, sceneOf, seedStrike, shotOf,
+  ballMap, CONSTANTS, constantsOf, errorByPhase, fitStrike, NOT_EXPRESSED, percentile, residuals, rmsError, sceneOf, seedStrike, shotOf,
   simulateShot, t0Range, TABLE, tableWith,
 } from './fit.ts';
 export type { Strike } from './fit.ts';

@@ -122,7 +122,7 @@ describe('docs/fidelity.json', () => {
       }
       const out = simulate(rec.scene, rec.shot);
       const r = residuals(shot, out, rec.t0, TABLE);
-      expect(Math.sqrt(r.reduce((a, b) => a + b, 0) / r.length)).toBeCloseTo(rec.rms, 9);
+      expect(Math.sqrt(r.reduce((a, x) => a + x.d2, 0) / r.length)).toBeCloseTo(rec.rms, 9);
     }
   });
 });

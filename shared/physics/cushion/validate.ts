@@ -16,15 +16,22 @@ function checkFinite(name: string, field: string, value: unknown): void {
   if (typeof value !== 'number' || !Number.isFinite(value)) fail(`${name}.${field}`, 'must be a finite number', value);
 }
 
+const STATE_FIELDS = ['vx', 'vy', 'wx', 'wy', 'wz'] as const;
+const PARAM_FIELDS = ['M', 'R', 'h', 'ee', 'muS', 'muW'] as const;
+
 export function validateState(state: CushionState): void {
   if (state === null || typeof state !== 'object') fail('state', 'must be an object', state);
-  for (const field of ['vx', 'vy', 'wx', 'wy', 'wz'] as const) checkFinite('state', field, state[field]);
+  const { vx, vy, wx, wy, wz } = state;
+  if (Number.isFinite(vx) && Number.isFinite(vy) && Number.isFinite(wx) && Number.isFinite(wy) && Number.isFinite(wz)) return;
+  for (const field of STATE_FIELDS) checkFinite('state', field, state[field]);
 }
 
 export function validateParams(params: CushionParams): void {
   if (params === null || typeof params !== 'object') fail('params', 'must be an object', params);
-  for (const field of ['M', 'R', 'h', 'ee', 'muS', 'muW'] as const) checkFinite('params', field, params[field]);
   const { M, R, h, ee, muS, muW } = params;
+  if (!(Number.isFinite(M) && Number.isFinite(R) && Number.isFinite(h) && Number.isFinite(ee) && Number.isFinite(muS) && Number.isFinite(muW))) {
+    for (const field of PARAM_FIELDS) checkFinite('params', field, params[field]);
+  }
   if (!(M > 0)) fail('params.M', 'must be positive', M);
   if (!(R > 0)) fail('params.R', 'must be positive', R);
   if (!(h > R && h < 2 * R)) fail('params.h', `must lie in (R, 2R) = (${R}, ${2 * R})`, h);
