@@ -87,5 +87,6 @@ export function mountLobby(root: HTMLElement, ctx: PageContext): () => void {
   return () => {
     stop();
     session.forget('lobby');
+    session.send({ type: 'lobby', watch: false });
   };
 }

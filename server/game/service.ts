@@ -134,7 +134,8 @@ export class GameService {
   private command(conn: ConnId, player: PlayerRef, msg: Exclude<ClientMessage, { type: 'hello' }>): void {
     switch (msg.type) {
       case 'lobby':
-        this.lobby.subscribers.add(conn);
+        if (msg.watch === false) this.lobby.subscribers.delete(conn);
+        else this.lobby.subscribers.add(conn);
         this.send([conn], { type: 'lobby', ...re(msg.id), rooms: this.lobby.listing(), online: this.lobby.online() });
         return;
       case 'create':

@@ -47,7 +47,8 @@ export const HelloSchema = v.object({
   name: v.optional(plainText(NAME_MAX)),
   token: v.optional(v.pipe(v.string(), v.minLength(1), v.maxLength(128))),
 });
-export const LobbySchema = v.object({ type: v.literal('lobby'), id: RequestId });
+/** The lobby now; `watch` (default true) keeps its updates coming, `watch: false` stops them. */
+export const LobbySchema = v.object({ type: v.literal('lobby'), id: RequestId, watch: v.optional(v.boolean()) });
 export const CreateSchema = v.object({
   type: v.literal('create'),
   id: RequestId,

@@ -53,6 +53,12 @@ describe('the game service', () => {
     const rooms = last(h, 2, 'lobby').rooms;
     expect(rooms).toHaveLength(1);
     expect(rooms[0]).toMatchObject({ kind: 'snooker', raceTo: 3, players: [{ name: 'Ann' }], spectators: 0, status: 'waiting' });
+    // watch: false stops the updates; a later lobby request starts them again.
+    h.send(2, { type: 'lobby', watch: false });
+    expect(h.send(1, { type: 'create', kind: 'eightball' }).get(2)?.some((m) => m.type === 'lobby')).toBeFalsy();
+    h.send(2, { type: 'lobby' });
+    expect(last(h, 2, 'lobby').rooms).toHaveLength(2);
+    expect(h.send(1, { type: 'create', kind: 'threecushion' }).get(2)?.some((m) => m.type === 'lobby')).toBe(true);
   });
 
   it('starts the game on join, the creator breaking, and refuses a third player', () => {
