@@ -1,6 +1,23 @@
-// A player's page: ratings per game, best records, recent matches.
+// A player's page: ratings per game, best records, recent matches (more on request, a page at a
+// time from GET /api/matches).
 import { h, KIND_NAMES, link } from '../dom.ts';
 import { api } from '../net/api.ts';
+
+interface MatchSummary {
+  id: number;
+  kind: string;
+  players: { id: string; name: string }[];
+  status: string;
+  result: { winner: string } | null;
+}
+
+/** Matches fetched per "More matches". */
+const PAGE = 20;
+
+function matchItem(m: MatchSummary): HTMLElement {
+  const outcome = m.result ? ` · won by ${m.players.find((x) => x.id === m.result!.winner)?.name ?? ''}` : ` · ${m.status}`;
+  return h('li', {}, link(`/match/${m.id}`, `${KIND_NAMES[m.kind] ?? m.kind}: ${m.players.map((x) => x.name).join(' v ')}`), outcome);
+}
 
 interface PlayerPage {
   name: string;
@@ -8,7 +25,7 @@ interface PlayerPage {
   wins: number;
   ratings: Record<string, { rating: number; rd: number; games: number; wins: number; provisional: boolean }>;
   records: { kind: string; what: string; value: number; match?: number }[];
-  recent: { id: number; kind: string; players: { id: string; name: string }[]; status: string; result: { winner: string } | null }[];
+  recent: MatchSummary[];
 }
 
 export function mountPlayer(root: HTMLElement, _ctx: unknown, id: string): () => void {
@@ -18,6 +35,25 @@ export function mountPlayer(root: HTMLElement, _ctx: unknown, id: string): () =>
   api<PlayerPage>(`/api/players/${encodeURIComponent(id)}`).then(
     (p) => {
       if (!live) return;
+      const matches = h('ul', { 'aria-label': 'Recent matches' }, ...p.recent.map(matchItem));
+      // (The player's record lists the 10 newest: fewer means there are no more.)
+      const more: HTMLButtonElement = h('button', { type: 'button', hidden: p.recent.length < 10 }, 'More matches');
+      more.onclick = () => {
+        more.disabled = true;
+        const offset = matches.children.length;
+        api<{ matches: MatchSummary[] }>(`/api/matches?player=${encodeURIComponent(id)}&limit=${PAGE}&offset=${offset}`).then(
+          (page) => {
+            if (!live) return;
+            matches.append(...page.matches.map(matchItem));
+            more.disabled = false;
+            if (page.matches.length < PAGE) more.hidden = true;
+          },
+          (err: Error) => {
+            more.disabled = false;
+            section.append(h('p', { role: 'status' }, err.message));
+          },
+        );
+      };
       section.replaceChildren(
         h('h2', {}, p.name),
         h('p', {}, `${p.games} rated games, ${p.wins} won.`),
@@ -25,7 +61,8 @@ export function mountPlayer(root: HTMLElement, _ctx: unknown, id: string): () =>
         h('h3', {}, 'Records'),
         h('ul', { 'aria-label': 'Records' }, ...p.records.map((r) => h('li', {}, `${KIND_NAMES[r.kind] ?? r.kind}: ${r.what} ${r.value}`, r.match ? h('span', {}, ' · ', link(`/match/${r.match}`, 'replay')) : ''))),
         h('h3', {}, 'Recent matches'),
-        h('ul', { 'aria-label': 'Recent matches' }, ...p.recent.map((m) => h('li', {}, link(`/match/${m.id}`, `${KIND_NAMES[m.kind] ?? m.kind}: ${m.players.map((x) => x.name).join(' v ')}`), m.result ? ` · won by ${m.players.find((x) => x.id === m.result!.winner)?.name ?? ''}` : ` · ${m.status}`))),
+        matches,
+        more,
       );
     },
     (err: Error) => section.append(h('p', { role: 'status' }, err.message)),

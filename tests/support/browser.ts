@@ -31,14 +31,17 @@ export async function launchChromium(): Promise<Browser> {
 }
 
 /**
- * For a describe block: a real server on a fresh database and Chromium, started before its tests
- * and stopped after; read them through the returned getters inside the tests.
+ * For a describe block: a real server on a fresh database (given to `prepare` first, if any) and
+ * Chromium, started before its tests and stopped after; read them through the returned getters
+ * inside the tests.
  */
-export function serverAndChromium(): { readonly browser: Browser; readonly server: ServerProcess } {
+export function serverAndChromium(prepare?: (dbPath: string) => void): { readonly browser: Browser; readonly server: ServerProcess } {
   let browser: Browser | undefined;
   let server: ServerProcess | undefined;
   beforeAll(async () => {
-    server = await startServerProcess({ BAIZE_DB: join(tempDir(), 'baize.db') });
+    const dbPath = join(tempDir(), 'baize.db');
+    prepare?.(dbPath);
+    server = await startServerProcess({ BAIZE_DB: dbPath });
     browser = await launchChromium();
   });
   afterAll(async () => {
