@@ -105,6 +105,37 @@ export function rmsError(s: TrackedShot, scene: Scene, st: Strike, table: TableS
   return r.length === 0 ? 0 : Math.sqrt(r.reduce((a, x) => a + x.d2, 0) / r.length);
 }
 
+/**
+ * The data's time of the first ball-ball contact, near enough: the last tracked time before an
+ * object ball's first move (its second sample; a ball at rest keeps only two samples).
+ */
+export function firstContactTime(s: TrackedShot): number {
+  let t = Infinity;
+  for (const [id, b] of Object.entries(s.balls)) {
+    if (id === s.cue || b.t.length < 3) continue;
+    t = Math.min(t, b.t[1]! - 0.02);
+  }
+  return t;
+}
+
+/** RMS distance (m) of the cue ball alone at the tracked times in [t0, until): its opening run. */
+export function openingError(s: TrackedShot, scene: Scene, st: Strike, table: TableSpec, until: number): number {
+  const out = simulateShot(s, scene, st, table);
+  if (out === null) return REFUSED;
+  const b = s.balls[s.cue]!;
+  let sum = 0;
+  let n = 0;
+  for (let i = 0; i < b.t.length; i++) {
+    const t = b.t[i]!;
+    if (t < st.t0) continue;
+    if (t >= until) break;
+    const p = sampleOutcome(out, t - st.t0, table).find((q) => q.id === SIM_IDS[0])!;
+    sum += (p.x - b.x[i]!) ** 2 + (p.y - b.y[i]!) ** 2;
+    n++;
+  }
+  return n === 0 ? 0 : Math.sqrt(sum / n);
+}
+
 /** A first guess from the cue ball's first frames: heading and speed of its first move. */
 export function seedStrike(s: TrackedShot): Strike {
   const b = s.balls[s.cue]!;
@@ -117,7 +148,9 @@ export function seedStrike(s: TrackedShot): Strike {
 }
 
 /** The strike that best reproduces the shot on the table: Nelder-Mead from the seed, restarted once. */
-export function fitStrike(s: TrackedShot, table: TableSpec, seed: Strike = seedStrike(s), evaluations = 300): { strike: Strike; rms: number } {
+export function fitStrike(
+  s: TrackedShot, table: TableSpec, seed: Strike = seedStrike(s), evaluations = 300, until?: number,
+): { strike: Strike; rms: number } {
   const scene = sceneOf(s);
   const [lo, hi] = t0Range(s);
   const strikeOf = (x: number[]): Strike => ({ heading: x[0]!, speed: x[1]!, side: x[2]!, top: x[3]!, t0: x[4]! });
@@ -127,7 +160,7 @@ export function fitStrike(s: TrackedShot, table: TableSpec, seed: Strike = seedS
     const tip = Math.hypot(st.side, st.top);
     const out = Math.max(0, tip - 0.5) + Math.max(0, lo - st.t0) + Math.max(0, st.t0 - hi) + Math.max(0, 0.05 - st.speed);
     if (out > 0) return REFUSED + out;
-    return rmsError(s, scene, st, table);
+    return until === undefined ? rmsError(s, scene, st, table) : openingError(s, scene, st, table, until);
   };
   let x = [seed.heading, seed.speed, seed.side, seed.top, Math.min(hi, Math.max(lo, seed.t0))];
   let best = { x, f: cost(x), evaluations: 0 };

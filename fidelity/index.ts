@@ -3,8 +3,8 @@
 export { DATA_SCALE, readShots, rollingDeceleration, toShot } from './data.ts';
 export type { Track, TrackedShot } from './data.ts';
 export {
-  ballMap, CONSTANTS, constantsOf, errorByPhase, fitStrike, NOT_EXPRESSED, percentile, residuals, rmsError, sceneOf, seedStrike, shotOf,
-  simulateShot, t0Range, TABLE, tableWith,
+  ballMap, CONSTANTS, constantsOf, errorByPhase, firstContactTime, fitStrike, NOT_EXPRESSED, openingError, percentile, residuals, rmsError, sceneOf,
+  seedStrike, shotOf, simulateShot, t0Range, TABLE, tableWith,
 } from './fit.ts';
 export type { Strike } from './fit.ts';
 export { fitShot, fitTable } from './search.ts';

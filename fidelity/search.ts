@@ -2,19 +2,51 @@
 // way the cue ball can meet the first object ball), and the table's constants on fixed strikes.
 import type { TableSpec } from '../shared/physics/index.ts';
 import type { TrackedShot } from './data.ts';
-import { CONSTANTS, constantsOf, fitStrike, seedStrike, tableWith, type Strike } from './fit.ts';
+import { CONSTANTS, constantsOf, firstContactTime, fitStrike, seedStrike, tableWith, type Strike } from './fit.ts';
 
-/** The best strike over starts at three topspins and three sidespins, refined. */
+/** The spins each start is tried at: top -0.3, 0.1, 0.4 R by side -0.3, 0, 0.3 R. */
+const SPINS: readonly (readonly [number, number])[] = [-0.3, 0.1, 0.4].flatMap((top) => [-0.3, 0, 0.3].map((side) => [top, side] as const));
+
+/**
+ * The best strike for a shot. Starts: `from` (a strike fitted before, e.g. on other constants)
+ * as it is, and the nine spins at each of two strikes: the seed from the cue ball's first frames
+ * with its heading, speed and t0 fitted to the cue ball's opening run (its tracked samples
+ * before the first object ball moves), and `from`. The best is tried again at headings 0.01 and
+ * 0.02 rad either side (the first contact's cut is the most sensitive choice), refined, then
+ * Nelder-Mead restarted from its result until a restart gains less than 0.1 mm.
+ */
 export function fitShot(s: TrackedShot, table: TableSpec, from?: Strike): { strike: Strike; rms: number } {
-  const seed = from ?? seedStrike(s);
-  let best = from ? fitStrike(s, table, from, 150) : { strike: seed, rms: Infinity };
-  for (const top of [-0.3, 0.1, 0.4]) {
-    for (const side of [-0.3, 0, 0.3]) {
-      const f = fitStrike(s, table, { ...seed, top, side }, 60);
+  let best = from ? fitStrike(s, table, from, 150) : { strike: seedStrike(s), rms: Infinity };
+  const bases: Strike[] = [openingStrike(s, table)];
+  if (from) bases.push(from);
+  for (const base of bases) {
+    for (const [top, side] of SPINS) {
+      const f = fitStrike(s, table, { ...base, top, side }, 60);
       if (f.rms < best.rms) best = f;
     }
   }
-  return fitStrike(s, table, best.strike, 300);
+  const b = best.strike;
+  for (const dh of [-0.02, -0.01, 0.01, 0.02]) {
+    const f = fitStrike(s, table, { ...b, heading: b.heading + dh }, 60);
+    if (f.rms < best.rms) best = f;
+  }
+  best = fitStrike(s, table, best.strike, 300);
+  for (let k = 0; k < 5; k++) {
+    const f = fitStrike(s, table, best.strike, 150);
+    const gain = best.rms - f.rms;
+    if (f.rms < best.rms) best = f;
+    if (!(gain > 1e-4)) break;
+  }
+  return best;
+}
+
+/** The seed with its heading, speed and t0 fitted to the cue ball's run before the first contact. */
+function openingStrike(s: TrackedShot, table: TableSpec): Strike {
+  const seed = seedStrike(s);
+  const until = firstContactTime(s);
+  if (!Number.isFinite(until)) return seed;
+  const o = fitStrike(s, table, seed, 100, until).strike;
+  return { ...seed, heading: o.heading, speed: o.speed, t0: o.t0 };
 }
 
 /**

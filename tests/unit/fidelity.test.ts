@@ -5,7 +5,8 @@ import { join } from 'node:path';
 import { describe, expect, it } from 'vitest';
 import { simulate, type Scene, type Shot } from '../../shared/physics/index.ts';
 import {
-  DATA_SCALE, fitShot, nelderMead, readShots, residuals, rmsError, rollingDeceleration, sceneOf, seedStrike, t0Range, TABLE, toShot,
+  DATA_SCALE, firstContactTime, fitShot, fitStrike, nelderMead, openingError, readShots, residuals, rmsError, rollingDeceleration, sceneOf,
+  seedStrike, t0Range, TABLE, toShot,
 } from '../../fidelity/index.ts';
 
 const EXCERPT = join(import.meta.dirname, '..', 'fixtures', 'three-cushion-excerpt.json');
@@ -65,6 +66,19 @@ describe('the fits', () => {
       expect(Math.hypot(fit.strike.side, fit.strike.top)).toBeLessThanOrEqual(0.5);
     }
   }, 60_000);
+
+  it("the cue ball's opening run: ends before an object ball moves, and its own fit brings the cue ball closer", () => {
+    for (const s of shots) {
+      const until = firstContactTime(s);
+      expect(until).toBeGreaterThan(t0Range(s)[1]);
+      for (const [id, b] of Object.entries(s.balls)) if (id !== s.cue && b.t.length > 2) expect(until).toBeLessThan(b.t[1]!);
+      const seed = seedStrike(s);
+      const fit = fitStrike(s, TABLE, seed, 100, until);
+      // (Shot 11's cue ball goes round three cushions first: 3.6 s, 47 cm off at the seed.)
+      expect(fit.rms).toBeLessThan(openingError(s, sceneOf(s), seed, TABLE, until) / 5);
+      expect(fit.rms).toBeCloseTo(openingError(s, sceneOf(s), fit.strike, TABLE, until), 12);
+    }
+  });
 
   it('Nelder-Mead finds the minimum of a shifted quadratic bowl from anywhere nearby', () => {
     fc.assert(
