@@ -193,7 +193,8 @@ export function tableWith(base: TableSpec, c: readonly number[]): TableSpec | nu
     ...base,
     cushionHeight: hR * R,
     cloth: { muSlide, muRoll, spinDecel },
-    cushion: { height: hR * R, restitution: ee, friction: muW },
+    // (The restitution's fall with speed, if the base table has one, is kept.)
+    cushion: { ...base.cushion, height: hR * R, restitution: ee, friction: muW },
     ballBall: { ...base.ballBall, restitution: e, frictionA: ALCIATORE.a * fk, frictionB: ALCIATORE.b * fk },
   };
 }

@@ -8,6 +8,10 @@
 //                   result, this writes docs/fidelity.json for the constants as shipped: a
 //                   three-cushion shot is chaotic, and a constant one bit off moves some shots far)
 //   --shots N       only the first N shots (a quick look)
+//   --restitution e, --restitution-slope k
+//                   the cushion's restitution and its fall with the normal speed (per m/s,
+//                   CushionSpec.restitutionSlope) in place of the shipped ones, for the search's
+//                   start or, with --shipped, for the strikes (not written back to the tables)
 import { existsSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { parseArgs } from 'node:util';
@@ -22,7 +26,7 @@ import {
 // (npm runs scripts from the repository's root; the bundle itself lives in a temporary folder.)
 const ROOT = process.cwd();
 const DEFAULT_DATA = join(ROOT, '..', 'shared', 'data', 'three-cushion-trajectories.json');
-const { values, positionals } = parseArgs({ allowPositionals: true, options: { 'fit-shots': { type: 'string', default: '40' }, shipped: { type: 'boolean', default: false }, steps: { type: 'string', default: '0.3,0.15' }, shots: { type: 'string' } } });
+const { values, positionals } = parseArgs({ allowPositionals: true, options: { 'fit-shots': { type: 'string', default: '40' }, shipped: { type: 'boolean', default: false }, steps: { type: 'string', default: '0.3,0.15' }, shots: { type: 'string' }, restitution: { type: 'string' }, 'restitution-slope': { type: 'string' } } });
 const path = positionals[0] ?? DEFAULT_DATA;
 if (!existsSync(path)) {
   console.error(`fidelity: no tracked shots at ${path}. Pass the path of three-cushion-trajectories.json (tailuge/billiards' dist/fit/trajectories.json) as the first argument.`);
@@ -52,13 +56,26 @@ const beforeByShot = new Map(all.map((s, i) => [s.id, { strike: before.strikes[i
 
 // The table on the training half, from the cloth's rolling resistance read off the training
 // shots' straight runs.
-let table: TableSpec = TABLE;
+// The shipped constants, with the cushion's restitution (and its fall with speed) of the command line.
+const BASE: TableSpec = values.restitution === undefined && values['restitution-slope'] === undefined ? TABLE : {
+  ...TABLE,
+  cushion: {
+    ...TABLE.cushion,
+    restitution: Number(values.restitution ?? TABLE.cushion.restitution),
+    ...(values['restitution-slope'] === undefined ? {} : { restitutionSlope: Number(values['restitution-slope']) }),
+  },
+};
+if (!(BASE.cushion.restitution > 0 && BASE.cushion.restitution <= 1) || !Number.isFinite(BASE.cushion.restitutionSlope ?? 0)) {
+  console.error('fidelity: --restitution must be in (0, 1] and --restitution-slope a number (per m/s)');
+  process.exit(1);
+}
+let table: TableSpec = BASE;
 if (!values.shipped) {
   const decel = rollingDeceleration(train);
-  const start = constantsOf(TABLE);
+  const start = constantsOf(BASE);
   const roll = CONSTANTS.indexOf('muRoll');
   if (Math.abs(start[roll]! / (decel / TABLE.g) - 1) > 0.2) start[roll] = decel / TABLE.g;
-  table = tableWith(TABLE, start) ?? TABLE;
+  table = tableWith(BASE, start) ?? BASE;
   log(`rolling deceleration in the training shots' straight runs: ${decel.toFixed(4)} m/s² (μ_roll ${(decel / TABLE.g).toFixed(4)})`);
   // The search refits every strike of a trial in full, so it runs on a fixed sample of the
   // training half (every other even id); the whole training half is then refitted on its result.
@@ -87,6 +104,7 @@ console.log('\n| constant | earlier | fitted |\n|---|---|---|');
 const c0 = constantsOf(EARLIER);
 const c1 = constantsOf(table);
 CONSTANTS.forEach((name, i) => console.log(`| ${name} | ${c0[i]!.toPrecision(4)} | ${c1[i]!.toPrecision(4)} |`));
+if (table.cushion.restitutionSlope !== undefined) console.log(`| restitutionSlope (per m/s) | none | ${table.cushion.restitutionSlope} |`);
 if (values.shipped) console.log('\n(--shipped: the fitted constants are the shipped ones, as fitted by an earlier run with the search.)');
 // Where the held-out error lies.
 const phases = idx(test).map((i) => {
@@ -142,7 +160,7 @@ console.log(`\nRuntime of the whole fit: ${((performance.now() - started) / 1000
 
 // docs/fidelity.json: the scenes and the strikes under the fitted constants.
 const json = {
-  constants: Object.fromEntries(CONSTANTS.map((n, i) => [n, c1[i]])),
+  constants: { ...Object.fromEntries(CONSTANTS.map((n, i) => [n, c1[i]])), ...(table.cushion.restitutionSlope === undefined ? {} : { restitutionSlope: table.cushion.restitutionSlope }) },
   test: test.map((s) => s.id),
   shots: all.map((s, i) => {
     const st = after.strikes[i]!;

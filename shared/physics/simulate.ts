@@ -341,11 +341,16 @@ class Simulation {
     // model's, which never grows.
     const k = this.cushionParams.R === this.R ? 1 : this.R / this.cushionParams.R;
     const input = k === 1 ? { vx: vxf, vy: vyf, wx: wxf, wy: wyf, wz: s.wz } : { vx: vxf, vy: vyf, wx: wxf * k, wy: wyf * k, wz: s.wz * k };
+    // The table's restitution falling with the normal speed (CushionSpec.restitutionSlope), if set.
+    const slope = this.table.cushion.restitutionSlope;
+    const params = slope === undefined || slope === 0
+      ? this.cushionParams
+      : { ...this.cushionParams, ee: Math.min(1, Math.max(0, this.cushionParams.ee - slope * vyf)) };
     let out: ReturnType<CushionKernel['rebound']>;
     try {
-      out = this.cushion.rebound(input, this.cushionParams, { tolerance: this.cushionTol });
+      out = this.cushion.rebound(input, params, { tolerance: this.cushionTol });
     } catch (err) {
-      throw new Error(`cushion impact of ball "${b.id}" on ${cushion.name} at t = ${t} s failed: ${(err as Error).message}; input ${JSON.stringify(input)}, params ${JSON.stringify(this.cushionParams)}`);
+      throw new Error(`cushion impact of ball "${b.id}" on ${cushion.name} at t = ${t} s failed: ${(err as Error).message}; input ${JSON.stringify(input)}, params ${JSON.stringify(params)}`);
     }
     s.vx = out.vx * ny + out.vy * nx;
     s.vy = -out.vx * nx + out.vy * ny;

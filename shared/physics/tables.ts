@@ -31,6 +31,14 @@ export interface CushionSpec {
   readonly restitution: number;
   /** Ball-cushion friction μ_w. */
   readonly friction: number;
+  /**
+   * Optional: how fast the restitution falls with the impact's normal speed v_n (per m/s). With
+   * it, an impact's e_e is restitution - restitutionSlope * v_n, kept within [0, 1]: a real
+   * cushion returns less of a hard impact's energy (Mathavan, Jackson and Parkin 2010 find their
+   * rigid-cushion model valid below about 2.5 m/s normal speed). Absent (the default): e_e is
+   * the constant restitution.
+   */
+  readonly restitutionSlope?: number;
 }
 
 export interface TableSpec {

@@ -4,6 +4,8 @@ import {
   cushionParamsOf, energyAt, sampleOutcome, simulate, SimulationInputError, tableSpec,
   type CushionParams, type Outcome, type SimOptions,
 } from '../../../shared/physics/index.ts';
+import { simulateOn } from '../../../shared/physics/diagnostics.ts';
+import type { TableSpec } from '../../../shared/physics/tables.ts';
 import { corpusCases, type CorpusCase } from '../../../shared/scenes/index.ts';
 
 const KEYS = ['M', 'R', 'h', 'ee', 'muS', 'muW'] as const;
@@ -175,5 +177,48 @@ describe('simulate with the cushion constants of the call (options.cushion)', ()
       }),
       { numRuns: 2000, seed: 20260304 },
     );
+  });
+});
+
+describe("a table's cushion restitution falling with the normal speed (CushionSpec.restitutionSlope)", () => {
+  const carom = tableSpec('carom-match');
+  const withSlope = (k: number): TableSpec => ({ ...carom, cushion: { ...carom.cushion, restitutionSlope: k } });
+  /** One ball driven into the long rail at an angle: its first impact's normal speed. */
+  const into = (speed: number): CorpusCase => ({
+    name: `into the rail at ${speed} m/s`, tags: [],
+    scene: { table: 'carom-match', balls: [{ id: 'w', x: 0, y: 0 }] },
+    shot: { ball: 'w', heading: 1.2, speed, side: 0.1, top: 0.2 },
+  });
+
+  it('is off by default on every table, and a slope of 0 changes nothing, bit for bit', () => {
+    for (const name of ['pool-9ft', 'snooker-12ft', 'carom-match'] as const) expect(tableSpec(name).cushion.restitutionSlope).toBeUndefined();
+    for (const c of SAMPLE.filter((x) => x.scene.table === 'carom-match')) {
+      const o = simulateOn(withSlope(0), c.scene, c.shot);
+      expect(o.hash, c.name).toBe(run(c).hash);
+      expect(o.events, c.name).toEqual(run(c).events);
+    }
+  });
+
+  it("gives each impact the restitution restitution - slope * v_n: the first impact as with that e_e passed for the call", () => {
+    for (const speed of [0.8, 2, 4]) {
+      const c = into(speed);
+      const k = 0.04;
+      const sloped = simulateOn(withSlope(k), c.scene, c.shot);
+      const first = sloped.events.find((e) => e.kind === 'cushion')!;
+      const ee = carom.cushion.restitution - k * first.speed!;
+      const fixed = run(c, { cushion: { ee } });
+      const after = (o: Outcome): unknown => sampleOutcome(o, first.t + 1e-3).find((b) => b.id === 'w');
+      expect(after(sloped), c.name).toEqual(after(fixed));
+      // And a harder impact loses more: the rebound is slower than with the constant restitution.
+      const vOf = (o: Outcome): number => { const b = sampleOutcome(o, first.t + 1e-3).find((x) => x.id === 'w')!; return Math.hypot(b.vx, b.vy); };
+      expect(vOf(sloped), c.name).toBeLessThan(vOf(run(c)));
+    }
+  });
+
+  it('keeps e_e within [0, 1] whatever the slope', () => {
+    for (const k of [-10, 10]) {
+      const o = simulateOn(withSlope(k), into(3).scene, into(3).shot);
+      for (const b of o.balls) expect(Number.isFinite(b.x) && Number.isFinite(b.y)).toBe(true);
+    }
   });
 });
