@@ -150,3 +150,31 @@ export function slowRuns(tracks: readonly Track[], table: TableSpec): SlowRuns {
   const across = rows.reduce((a, w) => a + Math.abs(-w.uy * w.ax + w.ux * w.ay), 0) / rows.length;
   return { windows: rows.length, decel: d!, slope: [sx!, sy!], across };
 }
+
+/**
+ * The cue ball's error before the first simulated ball-ball contact, split along and across its
+ * tracked motion (RMS, m): along is timing (speed, t0), across is line (heading, swerve).
+ */
+export function openingAlongAcross(cue: Track, out: Outcome, t0: number, table: TableSpec): { along: number; across: number } {
+  const contact = out.events.find((e) => e.kind === 'ball')?.t ?? Infinity;
+  let along = 0;
+  let across = 0;
+  let n = 0;
+  for (let i = 0; i < cue.t.length; i++) {
+    const dt = cue.t[i]! - t0;
+    if (dt < 0 || dt >= contact) continue;
+    const p = sampleOutcome(out, dt, table).find((q) => q.id === 'white')!;
+    const j = Math.min(i + 1, cue.t.length - 1);
+    const k = Math.max(i - 1, 0);
+    const dx = cue.x[j]! - cue.x[k]!;
+    const dy = cue.y[j]! - cue.y[k]!;
+    const d = Math.hypot(dx, dy);
+    if (!(d > 0)) continue;
+    const ex = p.x - cue.x[i]!;
+    const ey = p.y - cue.y[i]!;
+    along += ((ex * dx + ey * dy) / d) ** 2;
+    across += ((ex * dy - ey * dx) / d) ** 2;
+    n++;
+  }
+  return n === 0 ? { along: NaN, across: NaN } : { along: Math.sqrt(along / n), across: Math.sqrt(across / n) };
+}

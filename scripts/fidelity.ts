@@ -19,7 +19,7 @@ import { sampleOutcome } from '../shared/physics/index.ts';
 import type { TableSpec } from '../shared/physics/index.ts';
 import { figureSvg } from '../client/lab/svg-plot.ts';
 import {
-  ballMap, CONSTANTS, constantsOf, cushionRebounds, errorByPhase, fitShot, fitTable, NOT_EXPRESSED, percentile, readShots, rollingDeceleration,
+  ballMap, CONSTANTS, constantsOf, cushionRebounds, openingAlongAcross, errorByPhase, fitShot, fitTable, NOT_EXPRESSED, percentile, readShots, rollingDeceleration,
   sceneOf, shotOf, simulateShot, slowRuns, TABLE, tableWith, trackedAs, type Rebound, type Track, type Strike, type TrackedShot,
 } from '../fidelity/index.ts';
 
@@ -116,6 +116,12 @@ const phaseMedian = (k: 'first' | 'middle' | 'late'): string => cm(percentile(ph
 console.log('\nWhere the held-out error lies (median over shots of the RMS within each phase, cm):\n');
 console.log('| until the first ball-ball contact | from it to 3 s | after 3 s (late rolling) |\n|---|---|---|');
 console.log(`| ${phaseMedian('first')} | ${phaseMedian('middle')} | ${phaseMedian('late')} |`);
+const split = idx(test).map((i) => {
+  const s = all[i]!;
+  const out = simulateShot(s, sceneOf(s), after.strikes[i]!, table);
+  return out ? openingAlongAcross(s.balls[s.cue]!, out, after.strikes[i]!.t0, table) : null;
+}).filter((p) => p !== null && !Number.isNaN(p.along));
+console.log(`\nThe cue ball before its first contact, median over held-out shots: ${cm(percentile(split.map((p) => p!.along), 50))} cm along its tracked motion (timing), ${cm(percentile(split.map((p) => p!.across), 50))} cm across it (line).`);
 
 // What the data shows, measured alike on the tracked balls and on the simulated ones (sampled at
 // the tracked times, rounded and thinned as the data was), over every shot the model expresses.

@@ -3,7 +3,7 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { simulate, tableSpec } from '../../shared/physics/index.ts';
-import { cushionRebounds, slowRuns, trackedAs, type Track } from '../../fidelity/index.ts';
+import { cushionRebounds, openingAlongAcross, slowRuns, trackedAs, type Track } from '../../fidelity/index.ts';
 
 const TABLE = tableSpec('carom-match');
 const RAIL_X = TABLE.length / 2 - TABLE.ballRadius;
@@ -100,5 +100,27 @@ describe('a simulated ball tracked as the data was', () => {
     }
     // It starts where the scene put the ball.
     expect(tr.x[0]).toBeCloseTo(-0.5, 3);
+  });
+});
+
+describe('the cue ball\'s opening error', () => {
+  const scene = { table: 'carom-match' as const, balls: [{ id: 'white', x: -1, y: 0 }, { id: 'yellow', x: 1.2, y: 0.55 }, { id: 'red', x: 1.2, y: -0.55 }] };
+  const out = simulate(scene, { ball: 'white', heading: 0, speed: 1.5, side: 0, top: 0.3 });
+  const times = Array.from({ length: 40 }, (_, i) => i * 0.02);
+  const exact = trackedAs(out, 'white', times, 0, TABLE);
+
+  it('is timing when the strike time is off: along the motion, nothing across', () => {
+    const r = openingAlongAcross(exact, out, 0.02, TABLE);
+    // The simulated ball is 0.02 s behind: about 0.02 s of its speed along, none across.
+    expect(r.along).toBeGreaterThan(0.02);
+    expect(r.along).toBeLessThan(0.04);
+    expect(r.across).toBeLessThan(0.001);
+  });
+
+  it('is line when the track is beside the path: across the motion', () => {
+    const beside = { ...exact, y: exact.y.map((y) => y + 0.01) };
+    const r = openingAlongAcross(beside, out, 0, TABLE);
+    expect(r.across).toBeCloseTo(0.01, 3);
+    expect(r.along).toBeLessThan(0.001);
   });
 });
