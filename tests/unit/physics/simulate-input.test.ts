@@ -29,6 +29,26 @@ describe('simulate rejects bad input before simulating anything', () => {
     expect(() => simulate({ table: 'pool-9ft', balls: [{ id: 'cue', x: 0, y: 0.62 }] }, shot)).not.toThrow();
     rejects({ table: 'pool-9ft', balls: [{ id: 'cue', x: 0, y: 0.66 }] }, shot, /over pocket ML: it would drop/);
     rejects({ table: 'pool-9ft', balls: [{ id: 'cue', x: 0.07, y: 0.64 }] }, shot, /off the table/);
+    // Against a corner jaw's rounded nose, a hair beyond the rail line and outside the mouth: where
+    // a bots' eight-ball game left its cue ball (the referee could not go on from there).
+    expect(() => simulate({ table: 'pool-9ft', balls: [{ id: 'cue', x: -1.1866397102871693, y: 0.6064525258769857 }] }, shot)).not.toThrow();
+    // Every nose: a ball touching it from the table's side is on the table.
+    for (const name of ['pool-9ft', 'snooker-12ft'] as const) {
+      const t = tableSpec(name);
+      for (const c of t.cushions) {
+        if (c.kind !== 'arc' || !c.name.endsWith('-nose')) continue;
+        for (let k = 0; k <= 8; k++) {
+          // Directions from the nose's centre toward the table, between its two ends (u, w).
+          const f = k / 8;
+          const ux = c.ux + f * (c.wx - c.ux);
+          const uy = c.uy + f * (c.wy - c.uy);
+          const n = Math.hypot(ux, uy);
+          const d = c.r + t.ballRadius + 1e-7;
+          const ball = { id: 'cue', x: c.cx + (d * ux) / n, y: c.cy + (d * uy) / n };
+          expect(() => simulate({ table: name, balls: [ball] }, shot), `${name} ${c.name} ${k}`).not.toThrow();
+        }
+      }
+    }
   });
 
   it('rejects duplicate ids, unknown balls and tables, empty scenes', () => {
