@@ -16,8 +16,9 @@ const MAX_SPAN = 0.09;
 
 /**
  * The cushion rebounds of a track: a sample near a rail's contact line (within 15 mm, or a
- * frame's travel) that is a local extreme toward it, with velocities from the two samples before (i-3, i-1) and after (i+1, i+3),
- * so that the sample nearest the contact, where the ball is turning, is used by neither.
+ * frame's travel) that is a local extreme toward it, with velocities from the samples i-3, i-1
+ * before and i+1, i+3 after, so that the sample nearest the contact, where the ball is turning,
+ * is used by neither.
  */
 export function cushionRebounds(b: Track, table: TableSpec): Rebound[] {
   const R = table.ballRadius;
@@ -62,7 +63,7 @@ export function trackedAs(out: Outcome, id: string, times: readonly number[], t0
   return k;
 }
 
-/** Least squares for a small dense system A x = r (Gaussian elimination, partial pivoting). */
+/** x with A x = r, for a small dense system (Gaussian elimination, partial pivoting). */
 function solve(A: number[][], r: number[]): number[] {
   const n = r.length;
   const a = A.map((row, i) => [...row, r[i]!]);

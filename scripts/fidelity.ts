@@ -19,8 +19,8 @@ import { sampleOutcome } from '../shared/physics/index.ts';
 import type { TableSpec } from '../shared/physics/index.ts';
 import { figureSvg } from '../client/lab/svg-plot.ts';
 import {
-  ballMap, CONSTANTS, constantsOf, cushionRebounds, openingAlongAcross, errorByPhase, fitShot, fitTable, NOT_EXPRESSED, percentile, readShots, rollingDeceleration,
-  sceneOf, shotOf, simulateShot, slowRuns, TABLE, tableWith, trackedAs, type Rebound, type Track, type Strike, type TrackedShot,
+  ballMap, CONSTANTS, constantsOf, cushionRebounds, errorByPhase, fitShot, fitTable, NOT_EXPRESSED, openingAlongAcross, percentile, readShots,
+  rollingDeceleration, sceneOf, shotOf, simulateShot, slowRuns, TABLE, tableWith, trackedAs, type Rebound, type Track, type Strike, type TrackedShot,
 } from '../fidelity/index.ts';
 
 // (npm runs scripts from the repository's root; the bundle itself lives in a temporary folder.)
@@ -106,11 +106,12 @@ const c1 = constantsOf(table);
 CONSTANTS.forEach((name, i) => console.log(`| ${name} | ${c0[i]!.toPrecision(4)} | ${c1[i]!.toPrecision(4)} |`));
 if (table.cushion.restitutionSlope !== undefined) console.log(`| restitutionSlope (per m/s) | none | ${table.cushion.restitutionSlope} |`);
 if (values.shipped) console.log('\n(--shipped: the fitted constants are the shipped ones, as fitted by an earlier run with the search.)');
+// Every shot simulated once on its fitted strike (null where the model refuses it), for what follows.
+const outcomes = all.map((s, i) => simulateShot(s, sceneOf(s), after.strikes[i]!, table));
 // Where the held-out error lies.
 const phases = idx(test).map((i) => {
-  const s = all[i]!;
-  const out = simulateShot(s, sceneOf(s), after.strikes[i]!, table);
-  return out ? errorByPhase(s, out, after.strikes[i]!.t0, table) : null;
+  const out = outcomes[i]!;
+  return out ? errorByPhase(all[i]!, out, after.strikes[i]!.t0, table) : null;
 }).filter((p) => p !== null);
 const phaseMedian = (k: 'first' | 'middle' | 'late'): string => cm(percentile(phases.map((p) => p[k]).filter((x) => !Number.isNaN(x)), 50));
 console.log('\nWhere the held-out error lies (median over shots of the RMS within each phase, cm):\n');
@@ -118,7 +119,7 @@ console.log('| until the first ball-ball contact | from it to 3 s | after 3 s (l
 console.log(`| ${phaseMedian('first')} | ${phaseMedian('middle')} | ${phaseMedian('late')} |`);
 const split = idx(test).map((i) => {
   const s = all[i]!;
-  const out = simulateShot(s, sceneOf(s), after.strikes[i]!, table);
+  const out = outcomes[i]!;
   return out ? openingAlongAcross(s.balls[s.cue]!, out, after.strikes[i]!.t0, table) : null;
 }).filter((p) => p !== null && !Number.isNaN(p.along));
 console.log(`\nThe cue ball before its first contact, median over held-out shots: ${cm(percentile(split.map((p) => p!.along), 50))} cm along its tracked motion (timing), ${cm(percentile(split.map((p) => p!.across), 50))} cm across it (line).`);
@@ -128,9 +129,8 @@ console.log(`\nThe cue ball before its first contact, median over held-out shots
 const tracked: Track[] = [];
 const simulated: Track[] = [];
 all.forEach((s, i) => {
-  if (!(after.rms[i]! <= NOT_EXPRESSED)) return;
-  const out = simulateShot(s, sceneOf(s), after.strikes[i]!, table);
-  if (!out) return;
+  const out = outcomes[i]!;
+  if (!(after.rms[i]! <= NOT_EXPRESSED) || !out) return;
   const map = ballMap(s);
   for (const [id, b] of Object.entries(s.balls)) {
     tracked.push(b);
@@ -181,7 +181,7 @@ const heldOut = idx(test).sort((a, b) => after.rms[a]! - after.rms[b]!);
 const chosen = [heldOut[heldOut.length >> 1]!, heldOut[(heldOut.length >> 1) + 1]!, heldOut[heldOut.length - 2]!, heldOut[heldOut.length - 1]!];
 const panels = chosen.map((i) => {
   const s = all[i]!;
-  const out = simulateShot(s, sceneOf(s), after.strikes[i]!, table);
+  const out = outcomes[i]!;
   const map = ballMap(s);
   const colors = ['#222', '#d4a017', '#d62728'];
   const series = Object.keys(s.balls).sort().flatMap((id, k) => {

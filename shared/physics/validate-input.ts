@@ -48,12 +48,11 @@ export function validateScene(scene: Scene): TableSpec {
     seen.add(b.id);
     const x = finite(b.x, `ball "${b.id}" x`);
     const y = finite(b.y, `ball "${b.id}" y`);
-    // Beyond the rectangle the rails leave, a centre may lie in a pocket's mouth or, within a ball
-    // radius of the rectangle, wherever it touches no cushion (checked below): against a rounded
-    // jaw nose, where the simulation can leave a ball.
+    // Beyond the rectangle the rails leave, a centre may lie within a ball radius of it wherever it
+    // touches no cushion (checked below: against a rounded jaw nose, where the simulation can
+    // leave a ball), or further out in a pocket's mouth.
     const beyond = Math.max(Math.abs(x) - hx, Math.abs(y) - hy);
-    const inMouth = table.pockets.find((p) => inConvexPolygon(p.mouth, x, y));
-    if (beyond > 0 && !inMouth && !(table.pockets.length > 0 && beyond <= R)) {
+    if (beyond > R && !table.pockets.some((p) => inConvexPolygon(p.mouth, x, y))) {
       fail(`ball "${b.id}" at (${x}, ${y}) is off the table: its centre must lie within ${table.length / 2 - R} of the centre along x and ${table.width / 2 - R} along y, or in a pocket's mouth`);
     }
     const over = table.pockets.find((p) => (x - p.x) * (x - p.x) + (y - p.y) * (y - p.y) < p.r * p.r);
