@@ -1,7 +1,9 @@
 // What the tracked shots show, measured the same way on the data and on the simulation: cushion
-// rebounds (normal speed and angle in and out) and the curvature of slow straight runs.
+// rebounds (normal speed and angle in and out), the curvature of slow straight runs, and the cue
+// ball's opening run.
 import { sampleOutcome, type Outcome, type TableSpec } from '../shared/physics/index.ts';
-import type { Track } from './data.ts';
+import type { Track, TrackedShot } from './data.ts';
+import { firstContactTime, fitStrike, openingError, sceneOf, simulateShot, type Strike } from './fit.ts';
 
 export interface Rebound {
   /** Speeds toward and away from the cushion, and along it before and after (m/s). */
@@ -178,4 +180,26 @@ export function openingAlongAcross(cue: Track, out: Outcome, t0: number, table: 
     n++;
   }
   return n === 0 ? { along: NaN, across: NaN } : { along: Math.sqrt(along / n), across: Math.sqrt(across / n) };
+}
+
+/**
+ * The cue ball's opening run (its tracked samples before the first object ball moves) under a
+ * shot's strike and under a strike fitted to that run alone: each one's RMS error on the run (m),
+ * and the ratio of the cue ball's speeds at the simulated first ball-ball contact (alone over
+ * the shot's). A ratio above 1 says the whole shot fits best with a cue ball slower at the
+ * contact than its own opening shows. Null without an opening run or a contact.
+ */
+export function openingRun(s: TrackedShot, strike: Strike, table: TableSpec): { whole: number; alone: number; speedRatio: number } | null {
+  const until = firstContactTime(s);
+  if (!Number.isFinite(until)) return null;
+  const alone = fitStrike(s, table, strike, 150, until);
+  const speedAtContact = (st: Strike): number => {
+    const out = simulateShot(s, sceneOf(s), st, table);
+    const contact = out?.events.find((e) => e.kind === 'ball');
+    if (!out || !contact) return NaN;
+    const cue = sampleOutcome(out, contact.t - 1e-9, table).find((q) => q.id === 'white')!;
+    return Math.hypot(cue.vx, cue.vy);
+  };
+  const ratio = speedAtContact(alone.strike) / speedAtContact(strike);
+  return Number.isFinite(ratio) ? { whole: openingError(s, sceneOf(s), strike, table, until), alone: alone.rms, speedRatio: ratio } : null;
 }

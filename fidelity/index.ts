@@ -9,5 +9,5 @@ export {
 export type { Strike } from './fit.ts';
 export { fitShot, fitTable } from './search.ts';
 export { nelderMead } from './nelder-mead.ts';
-export { cushionRebounds, openingAlongAcross, slowRuns, trackedAs } from './analysis.ts';
+export { cushionRebounds, openingAlongAcross, openingRun, slowRuns, trackedAs } from './analysis.ts';
 export type { Rebound, SlowRuns } from './analysis.ts';

@@ -19,7 +19,7 @@ import { sampleOutcome } from '../shared/physics/index.ts';
 import type { TableSpec } from '../shared/physics/index.ts';
 import { figureSvg } from '../client/lab/svg-plot.ts';
 import {
-  ballMap, CONSTANTS, constantsOf, cushionRebounds, errorByPhase, fitShot, fitTable, NOT_EXPRESSED, openingAlongAcross, percentile, readShots,
+  ballMap, CONSTANTS, constantsOf, cushionRebounds, errorByPhase, fitShot, fitTable, NOT_EXPRESSED, openingAlongAcross, openingRun, percentile, readShots,
   rollingDeceleration, sceneOf, shotOf, simulateShot, slowRuns, TABLE, tableWith, trackedAs, type Rebound, type Track, type Strike, type TrackedShot,
 } from '../fidelity/index.ts';
 
@@ -123,6 +123,9 @@ const split = idx(test).map((i) => {
   return out ? openingAlongAcross(s.balls[s.cue]!, out, after.strikes[i]!.t0, table) : null;
 }).filter((p) => p !== null && !Number.isNaN(p.along));
 console.log(`\nThe cue ball before its first contact, median over held-out shots: ${cm(percentile(split.map((p) => p!.along), 50))} cm along its tracked motion (timing), ${cm(percentile(split.map((p) => p!.across), 50))} cm across it (line).`);
+// The same run fitted alone: how much of it the whole shot's fit gives up, and for what speed.
+const runs = idx(test).filter((i) => after.rms[i]! <= NOT_EXPRESSED).map((i) => openingRun(all[i]!, after.strikes[i]!, table)).filter((r) => r !== null);
+console.log(`Its tracked run before the first object ball moves, median over the ${runs.length} held-out shots the model expresses: ${cm(percentile(runs.map((r) => r.whole), 50))} cm with the shot's strike, ${(percentile(runs.map((r) => r.alone), 50) * 1000).toFixed(1)} mm with a strike fitted to that run alone, which meets the first ball ${(percentile(runs.map((r) => r.speedRatio), 50)).toFixed(3)} times as fast.`);
 
 // What the data shows, measured alike on the tracked balls and on the simulated ones (sampled at
 // the tracked times, rounded and thinned as the data was), over every shot the model expresses.

@@ -3,7 +3,7 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { simulate, tableSpec } from '../../shared/physics/index.ts';
-import { cushionRebounds, openingAlongAcross, slowRuns, trackedAs, type Track } from '../../fidelity/index.ts';
+import { cushionRebounds, openingAlongAcross, openingRun, slowRuns, trackedAs, type Strike, type Track, type TrackedShot } from '../../fidelity/index.ts';
 
 const TABLE = tableSpec('carom-match');
 const RAIL_X = TABLE.length / 2 - TABLE.ballRadius;
@@ -122,5 +122,36 @@ describe('the cue ball\'s opening error', () => {
     const r = openingAlongAcross(beside, out, 0, TABLE);
     expect(r.across).toBeCloseTo(0.01, 3);
     expect(r.along).toBeLessThan(0.001);
+  });
+});
+
+describe('the cue ball\'s opening run fitted alone', () => {
+  // A shot tracked as the data was from a known strike between two frames: the cue ball's track
+  // starts where it rests, the object balls' where they are first sampled.
+  const scene = { table: 'carom-match' as const, balls: [{ id: 'white', x: -1, y: 0 }, { id: 'yellow', x: 0.5, y: 0.05 }, { id: 'red', x: 1, y: -0.4 }] };
+  const strike: Strike = { heading: 0, speed: 2, side: 0.1, top: 0.2, t0: 0.01 };
+  const out = simulate(scene, { ball: 'white', ...strike });
+  const times = Array.from({ length: 300 }, (_, i) => i * 0.02);
+  const track = (id: string): Track => trackedAs(out, id, times, strike.t0, TABLE);
+  const cue = track('white');
+  const shot: TrackedShot = {
+    id: 1,
+    cue: '1',
+    balls: { 1: { t: [0, ...cue.t], x: [-1, ...cue.x], y: [0, ...cue.y] }, 2: track('yellow'), 3: track('red') },
+  };
+
+  it('matches the run, and so does the true strike', () => {
+    const r = openingRun(shot, strike, TABLE)!;
+    expect(r.alone).toBeLessThan(0.002);
+    expect(r.whole).toBeLessThan(0.002);
+    expect(r.speedRatio).toBeCloseTo(1, 2);
+  });
+
+  it('finds the speed a slower strike gives up at the first contact', () => {
+    const r = openingRun(shot, { ...strike, speed: strike.speed * 0.95 }, TABLE)!;
+    expect(r.alone).toBeLessThan(0.002);
+    expect(r.whole).toBeGreaterThan(0.01);
+    expect(r.speedRatio).toBeGreaterThan(1.03);
+    expect(r.speedRatio).toBeLessThan(1.08);
   });
 });
