@@ -58,21 +58,22 @@ export function gameFor(state: RoomState, frame: number): Game {
   return newGame('snooker', players, { seed: state.seed + frame });
 }
 
-/** The shot clock's end after a change that leaves a game in play. */
-export function deadlineAfter(state: RoomState, now: number): number | null {
-  return state.status === 'playing' && state.shotClock > 0 ? now + state.shotClock * 1000 : null;
+/** The shot clock's end after a change that leaves a game in play, the clock starting at `from`. */
+export function deadlineAfter(state: RoomState, from: number): number | null {
+  return state.status === 'playing' && state.shotClock > 0 ? from + state.shotClock * 1000 : null;
 }
 
 /**
  * The room after a move produced `game`: a snooker frame won starts the next (the other player
- * breaks) until the race of frames is won; any other game's end ends the match.
+ * breaks) until the race of frames is won; any other game's end ends the match. The next
+ * player's clock starts at `clockFrom` (after a shot, once its balls have stopped).
  */
-export function afterMove(before: RoomState, game: Game, how: string, now: number): RoomState {
+export function afterMove(before: RoomState, game: Game, how: string, now: number, clockFrom = now): RoomState {
   const state = before.game === null ? before : { ...before, tally: tallyStep(before.tally, before.game, game) };
   const stateId = state.stateId + 1;
   if (game.winner === null) {
     const next = { ...state, game, stateId };
-    return { ...next, deadline: deadlineAfter(next, now) };
+    return { ...next, deadline: deadlineAfter(next, clockFrom) };
   }
   if (state.kind === 'snooker' && how === 'played') {
     const frames = { ...(state.frames ?? {}) };
@@ -80,7 +81,7 @@ export function afterMove(before: RoomState, game: Game, how: string, now: numbe
     if (frames[game.winner]! < state.raceTo) {
       const frame = state.frame + 1;
       const next: RoomState = { ...state, frames, frame, stateId, game: gameFor(state, frame) };
-      return { ...next, deadline: deadlineAfter(next, now) };
+      return { ...next, deadline: deadlineAfter(next, clockFrom) };
     }
     return over({ ...state, frames, game, stateId }, game.winner, how, now);
   }

@@ -112,17 +112,31 @@ export class GameService {
   private timers(room: Room, now: number): void {
     const s = room.state;
     if (s.status === 'over' && s.closesAt !== null && s.closesAt <= now) return this.settle(room, { ...s, status: 'closed' });
+    // A table nobody waits at any more (its player gone past the seat hold) closes.
+    if (s.status === 'waiting' && s.seats.every((p) => this.awayPastHold(p.id, now))) return this.settle(room, { ...s, status: 'closed' });
     if (s.status !== 'playing' || s.game === null) return;
     if (s.deadline !== null && s.deadline <= now) {
-      this.move(room, afterMove(s, shotClockExpired(s.game), 'played', now), { type: 'clock', player: s.game.turn });
+      if (s.seats.every((p) => !this.lobby.connected(p.id))) {
+        // Nobody is there to play: the clock stops until a player comes back, so that no game
+        // is decided by timeouts alone.
+        this.settle(room, { ...s, deadline: null });
+        this.broadcastRoom(room);
+      } else {
+        this.move(room, afterMove(s, shotClockExpired(s.game), 'played', now), { type: 'clock', player: s.game.turn });
+      }
     }
     for (const p of room.state.seats) {
-      const dropped = this.lobby.droppedSince(p.id);
-      if (dropped !== undefined && dropped + this.options.seatHoldMs <= now && !room.holdsOver.has(p.id)) {
+      if (this.awayPastHold(p.id, now) && !room.holdsOver.has(p.id)) {
         room.holdsOver.add(p.id);
         this.broadcastRoom(room);
       }
     }
+  }
+
+  /** A player disconnected for longer than the seat hold. */
+  private awayPastHold(playerId: string, now: number): boolean {
+    const dropped = this.lobby.droppedSince(playerId);
+    return dropped !== undefined && dropped + this.options.seatHoldMs <= now;
   }
 
   private welcomed(conn: ConnId): PlayerRef {
@@ -200,7 +214,11 @@ export class GameService {
     this.send([conn], { type: 'welcome', ...re(msg.id), player, token });
     for (const room of this.roomsOf(player.id)) {
       room.holdsOver.delete(player.id);
-      if (back) this.broadcastRoom(room);
+      const s = room.state;
+      // A clock stopped while nobody was there starts again for the player on turn.
+      const restart = s.status === 'playing' && s.game !== null && s.shotClock > 0 && s.deadline === null;
+      if (restart) this.settle(room, { ...s, deadline: deadlineAfter(s, this.now()) });
+      if (back || restart) this.broadcastRoom(room);
       else this.send([conn], { type: 'room', room: this.view(room) });
     }
   }
@@ -364,7 +382,8 @@ export class GameService {
     const shot = { ...msg.shot, player: player.id };
     const played = playShot(game, shot, msg.cueBall);
     const now = this.now();
-    const moved = afterMove(room.state, played.game, 'played', now);
+    // The next player's clock starts once the balls have stopped.
+    const moved = afterMove(room.state, played.game, 'played', now, now + Math.ceil(played.outcome.duration * 1000));
     const action: MatchAction = { type: 'shot', player: player.id, shot: msg.shot, ...(msg.cueBall ? { cueBall: msg.cueBall } : {}), hash: played.outcome.hash };
     // A snooker frame won but not the match: the frame's end and the next frame are two changes.
     const frameOver = moved.game !== played.game;

@@ -116,6 +116,77 @@ describe('the game service', () => {
     expect(after.deadline).toBe(h.clock + 30_000);
   });
 
+  it('starts the next player\'s clock once the balls of a shot have stopped', () => {
+    h = openHarness();
+    const room = table(h, 'nineball', { shotClock: 30 });
+    const shot = { ball: 'cue', heading: 0, speed: 7, side: 0, top: 0.1 };
+    const got = h.send(1, { type: 'shot', room: room.id, stateId: 1, shot });
+    const m = got.get(2)!.find((x) => x.type === 'shot') as Extract<ServerMessage, { type: 'shot' }>;
+    expect(m.outcome.duration).toBeGreaterThan(1);
+    expect(m.deadline).toBe(h.clock + Math.ceil(m.outcome.duration * 1000) + 30_000);
+    // While the balls still roll, and for 30 s after, nobody runs out of time.
+    h.clock = m.deadline! - 1;
+    expect(h.tick().size).toBe(0);
+    h.clock += 1;
+    h.tick();
+    expect(last(h, 1, 'room').room.game!.verdict).toMatchObject({ message: expect.stringContaining('ran out of time') });
+  });
+
+  it('stops the clock while nobody is there, and starts it again for the player on turn who comes back', () => {
+    h = openHarness({ seatHoldMs: 60_000 });
+    const room = table(h, 'nineball', { shotClock: 30 });
+    const annToken = last(h, 1, 'welcome').token;
+    h.send(3, { type: 'hello', name: 'Eve' });
+    h.send(3, { type: 'watch', room: room.id });
+    h.drop(1);
+    h.drop(2);
+    for (let k = 0; k < 10; k++) {
+      h.clock += 30_000;
+      h.tick();
+    }
+    // No foul was played for the absent players, and the spectator sees the clock stopped.
+    const seen = last(h, 3, 'room').room;
+    expect(seen).toMatchObject({ status: 'playing', stateId: 1 });
+    expect(seen.deadline).toBeUndefined();
+    expect(h.store.resultCount()).toBe(0);
+    h.send(7, { type: 'hello', token: annToken });
+    const back = last(h, 7, 'room').room;
+    expect(back).toMatchObject({ stateId: 1, deadline: h.clock + 30_000 });
+    expect(last(h, 3, 'room').room.deadline).toBe(h.clock + 30_000);
+    // With a player there, the clock runs as before.
+    h.clock += 30_000;
+    h.tick();
+    expect(last(h, 7, 'room').room).toMatchObject({ stateId: 2, game: { verdict: { message: expect.stringContaining('ran out of time') } } });
+  });
+
+  it('closes a waiting table once its player has been gone past the seat hold, not before', () => {
+    h = openHarness({ seatHoldMs: 60_000 });
+    welcome(h, 1, 'Ann');
+    const token = last(h, 1, 'welcome').token;
+    h.send(1, { type: 'create', kind: 'nineball' });
+    const kept = last(h, 1, 'room').room.id;
+    h.send(1, { type: 'create', kind: 'snooker' });
+    const gone = last(h, 1, 'room').room.id;
+    welcome(h, 2, 'Bob');
+    h.send(2, { type: 'lobby' });
+    expect(last(h, 2, 'lobby').rooms.map((r) => r.id)).toEqual([kept, gone]);
+    h.drop(1);
+    h.clock += 59_000;
+    h.tick();
+    // Back within the hold: both tables wait on. Then gone again, past the hold: both close.
+    h.send(8, { type: 'hello', token });
+    h.drop(8);
+    h.clock += 59_000;
+    h.tick();
+    h.send(2, { type: 'lobby' });
+    expect(last(h, 2, 'lobby').rooms).toHaveLength(2);
+    h.clock += 1_000;
+    h.tick();
+    h.send(2, { type: 'lobby' });
+    expect(last(h, 2, 'lobby').rooms).toEqual([]);
+    expect(errorOf(h.send(2, { type: 'join', room: kept }).get(2))?.code).toBe('no-room');
+  });
+
   it('holds a dropped seat, resumes it by token, and lets the opponent claim after the hold', () => {
     h = openHarness({ seatHoldMs: 60_000 });
     const room = table(h);
