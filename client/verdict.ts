@@ -14,11 +14,14 @@ const FOULS: Readonly<Record<string, string>> = {
   'break-red-first': 'the red not hit first on the opening',
 };
 
-/** Where the rules' messages name a player: at the start, and after these words. */
-const PLAYER = /(foul on the break by |foul by |break by |point for |: |; | to |have |and |^)([\w-]+)(?=[\s:;,)]|$)/g;
+/**
+ * Where the rules' messages name a player: at the start, and after these words. (Looked behind,
+ * not matched: a word taken after ": " must not hide an id right after it, as in ": foul by 5".)
+ */
+const PLAYER = /(?<=foul on the break by |foul by |break by |point for |: |; | to |have |and |^)([\w-]+)(?=[\s:;,)]|$)/g;
 
 export function inWords(message: string, names: (id: string) => string | undefined): string {
   return message
     .replace(/\(([a-z-]+(?:, [a-z-]+)*)\)/g, (m, codes: string) => (codes.split(', ').every((c) => FOULS[c]) ? `(${codes.split(', ').map((c) => FOULS[c]).join(', ')})` : m))
-    .replace(PLAYER, (m, pre: string, id: string) => pre + (names(id) ?? id));
+    .replace(PLAYER, (id: string) => names(id) ?? id);
 }

@@ -68,7 +68,7 @@ export function mountLobby(root: HTMLElement, ctx: PageContext): () => void {
           ` race to ${r.raceTo} · `,
           r.players.map((p) => p.name).join(' v ') || 'empty',
           ` · ${r.status}${r.spectators ? ` · ${r.spectators} watching` : ''} `,
-          r.status === 'waiting' ? h('a', { href: `/room/${r.id}`, 'data-link': true, className: 'button' }, 'Join') : h('a', { href: `/room/${r.id}`, 'data-link': true, className: 'button' }, 'Watch'),
+          h('a', { href: `/room/${r.id}`, 'data-link': true, className: 'button' }, r.players.some((p) => p.id === session.player?.id) ? 'Open' : r.status === 'waiting' ? 'Join' : 'Watch'),
           h('button', { type: 'button', onclick: () => void navigator.clipboard?.writeText(invite).then(() => (note.textContent = `Invite link copied: ${invite}`)) }, 'Copy invite link'),
         );
       }),

@@ -31,6 +31,10 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   /** A shot of this page's in flight, or shots being animated: no new shot meanwhile. */
   let busy = false;
   const animations: Outcome[] = [];
+  /** The shot clock's end, from the last room or shot message (ms since the epoch). */
+  let deadline: number | undefined;
+  /** Shots wait while the connection is down: the server could not take them. */
+  let online = session.status !== 'reconnecting';
 
   const title = h('h2', {}, 'Room');
   const players = h('ol', { className: 'players', 'aria-label': 'Players' });
@@ -52,7 +56,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
 
   const me = () => session.player?.id;
   const seated = () => !!room?.players.some((p) => p.id === me());
-  const myTurn = () => !!game && room?.status === 'playing' && game.winner === null && game.turn === me() && seated() && !busy;
+  const myTurn = () => !!game && room?.status === 'playing' && game.winner === null && game.turn === me() && seated() && !busy && online;
   const nameOf = (pid: string) => room?.players.find((p) => p.id === pid)?.name ?? pid;
   const words = (text: string) => inWords(text, (pid) => (room?.players.some((p) => p.id === pid) ? nameOf(pid) : undefined));
 
@@ -98,6 +102,16 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     if (room.status === 'over') verdict.textContent = `${room.winner ? nameOf(room.winner) : 'Nobody'} wins. ${g?.verdict ? words(g.verdict.message) : ''}`;
     actions.replaceChildren();
     if (room.status === 'waiting' && !seated()) actions.append(h('button', { type: 'button', onclick: () => void session.request({ type: 'join', room: id }) }, 'Join'));
+    if (room.status === 'waiting' && seated()) {
+      const invite = `${location.origin}/room/${id}`;
+      const copied = h('span', { className: 'note', role: 'status' });
+      actions.append(
+        h('span', { className: 'invite' }, 'Invite a player: ', h('a', { href: invite, 'aria-label': 'Invite link' }, invite)),
+        h('button', { type: 'button', onclick: () => void navigator.clipboard?.writeText(invite).then(() => (copied.textContent = 'Copied.')) }, 'Copy invite link'),
+        h('button', { type: 'button', onclick: () => void session.request({ type: 'leave', room: id }).then(() => ctx.navigate('/')) }, 'Close table'),
+        copied,
+      );
+    }
     if (room.status === 'playing' && seated()) actions.append(h('button', { type: 'button', onclick: () => session.send({ type: 'concede', room: id }) }, 'Concede'));
     if (room.status === 'over' && seated()) actions.append(h('button', { type: 'button', onclick: () => session.send({ type: 'rematch', room: id }) }, room.rematch?.includes(me() ?? '') ? 'Rematch asked' : 'Rematch'));
     if (room.status === 'playing' && room.players.some((p) => !p.connected && p.heldUntil !== undefined && p.heldUntil <= Date.now()) && seated())
@@ -167,6 +181,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     const reply = session.request({ type: 'shot', room: id, stateId: sentState, shot, ...(cueBall ? { cueBall } : {}) }).then(
       (m) => {
         if (m.type === 'shot') {
+          deadline = m.deadline;
           report(m, played.outcome.hash);
           if (m.outcome.hash !== played.outcome.hash) mismatch(m, played.outcome.hash);
           adopt(m.game, m.stateId);
@@ -190,6 +205,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
    * the server's hash; its animation waits for the ones before it.
    */
   function replay(m: ShotMessage): void {
+    deadline = m.deadline;
     if (!game || m.stateId !== stateId + 1) {
       console.warn(`baize: shot ${m.stateId} in room ${m.room} follows state ${stateId} here: taking the server's state`);
       report(m, `gap after ${stateId}`);
@@ -236,6 +252,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   const stop = session.onMessage((m) => {
     if (m.type === 'room' && m.room.id === id) {
       room = m.room;
+      deadline = m.room.deadline;
       if (!busy && m.room.stateId >= stateId) {
         game = m.room.game;
         stateId = m.room.stateId;
@@ -252,11 +269,12 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   });
   const stopStatus = session.onStatus((s) => {
     banner.textContent = s === 'reconnecting' ? 'Connection lost: reconnecting…' : '';
+    online = s !== 'reconnecting';
+    render();
   });
   const stopSpace = spaceShoots(shoot);
   const tick = setInterval(() => {
-    const d = room?.deadline;
-    clock.textContent = d && room?.status === 'playing' ? `${Math.max(0, Math.ceil((d - Date.now()) / 1000))} s` : '';
+    clock.textContent = deadline && room?.status === 'playing' ? `${Math.max(0, Math.ceil((deadline - Date.now()) / 1000))} s` : '';
   }, 250);
   session.keep(`room:${id}`, { type: 'watch', room: id });
   return () => {

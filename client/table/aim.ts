@@ -1,7 +1,8 @@
-// Aiming on a table view: the heading follows the pointer (or the arrow keys), power and spin come
-// from their controls, a ball in hand can be dragged inside its legal area, and the guidance the
-// room allows is drawn: an aim line, the path to first contact with its ghost ball, or the cue
-// ball's whole predicted path (simulated here with the same physics the server runs).
+// Aiming on a table view: the heading follows the pointer until a click holds it (or the arrow
+// keys turn it), power and spin come from their controls, a ball in hand can be dragged inside
+// its legal area, and the guidance the room allows is drawn: an aim line, the path to first
+// contact with its ghost ball, or the cue ball's whole predicted path (simulated here with the
+// same physics the server runs).
 import { sampleOutcome, simulate, type Outcome } from '../../shared/physics/index.ts';
 import { placementProblem, type Game } from '../../shared/rules/index.ts';
 import type { TableView } from './view.ts';
@@ -28,6 +29,8 @@ export class Aim {
   private cueId = 'cue';
   private active = false;
   private dragging = false;
+  /** A click holds the aim: the mouse may then go to the controls without turning the cue. */
+  private held = false;
   private preview: { key: string; outcome: Outcome | null } | null = null;
   private onChange: () => void = () => {};
 
@@ -50,7 +53,10 @@ export class Aim {
     this.active = active;
     this.guidance = guidance;
     this.onChange = changed;
-    if (turnChanged) delete this.state.cueBall;
+    if (turnChanged) {
+      delete this.state.cueBall;
+      this.held = false;
+    }
     this.preview = null;
   }
 
@@ -94,6 +100,7 @@ export class Aim {
       this.view.canvas.setPointerCapture(e.pointerId);
       return;
     }
+    this.held = true;
     this.aimAt(w);
   }
 
@@ -108,8 +115,8 @@ export class Aim {
       }
       return;
     }
-    if (e.pointerType === 'mouse' && e.buttons === 0) this.aimAt(w);
-    else if (e.buttons !== 0) this.aimAt(w);
+    // A mouse aims by hovering until a click holds the aim; pressing and dragging always aims.
+    if (e.buttons !== 0 || (e.pointerType === 'mouse' && !this.held)) this.aimAt(w);
   }
 
   private aimAt(w: { x: number; y: number }): void {

@@ -1,5 +1,5 @@
-// The stroke's controls beside the table: power, a spin picker (the tip's offset on the ball,
-// kept inside the miscue limit) and the Shoot button; space shoots too.
+// The stroke's controls beside the table: power, the aim's heading, a spin picker (the tip's
+// offset on the ball, kept inside the miscue limit) and the Shoot button; space shoots too.
 import { h } from '../dom.ts';
 import { MAX_SPEED, MIN_SPEED, type Aim } from './aim.ts';
 
@@ -56,7 +56,14 @@ export function strokeControls(aim: Aim, onShoot: () => void): Controls {
     aim.change();
   });
   const shoot = h('button', { type: 'button', className: 'shoot', onclick: () => onShoot() }, 'Shoot');
-  const element = h('div', { className: 'controls' }, h('label', {}, 'Power ', power, ' ', powerText), spin, shoot);
+  // The heading in degrees from the table's long axis, counter-clockwise (as the protocol has it).
+  const aimText = h('output', { 'aria-label': 'Aim' });
+  const showAim = () => {
+    const deg = (aim.state.heading * 180) / Math.PI;
+    aimText.textContent = `${(((deg % 360) + 360) % 360).toFixed(1)}°`;
+  };
+  const element = h('div', { className: 'controls' }, h('label', {}, 'Power ', power, ' ', powerText), h('span', {}, 'Aim ', aimText), spin, shoot);
+  showAim();
   drawSpin();
   return {
     element,
@@ -68,6 +75,7 @@ export function strokeControls(aim: Aim, onShoot: () => void): Controls {
     sync() {
       power.value = String(aim.state.speed);
       powerText.textContent = `${aim.state.speed.toFixed(2)} m/s`;
+      showAim();
       drawSpin();
     },
   };

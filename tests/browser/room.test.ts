@@ -1,0 +1,97 @@
+// A table in Chromium as a player uses it: a waiting table shows its invite link and can be
+// closed; a click holds the aim while the mouse goes to "Shoot"; after a shot the opponent's
+// clock counts from when the balls stop.
+import type { Page } from 'playwright-core';
+import { describe, expect, it } from 'vitest';
+import { chromiumAvailable, serverAndChromium } from '../support/browser.ts';
+
+describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
+  const env = serverAndChromium();
+
+  async function player(): Promise<Page> {
+    const ctx = await env.browser.newContext({ viewport: { width: 1100, height: 900 } });
+    const page = await ctx.newPage();
+    await page.goto(`${env.server.url}/`);
+    await page.waitForSelector('#server-status.ok');
+    return page;
+  }
+
+  async function openTable(page: Page, shotClock = 0): Promise<string> {
+    if (shotClock > 0) await page.getByLabel('Shot clock (s)').fill(String(shotClock));
+    await page.getByRole('button', { name: 'Create table' }).click();
+    await page.waitForURL(/\/room\/[\w-]+$/);
+    return page.url().split('/').at(-1)!;
+  }
+
+  it('shows a waiting table\'s invite link, and its player can close it', async () => {
+    const a = await player();
+    const id = await openTable(a);
+    await expect.poll(() => a.getByRole('link', { name: 'Invite link' }).getAttribute('href')).toBe(`${env.server.url}/room/${id}`);
+    const b = await player();
+    await expect.poll(() => b.locator(`li[data-room="${id}"]`).count()).toBe(1);
+    await a.getByRole('button', { name: 'Close table' }).click();
+    await a.waitForURL(`${env.server.url}/`);
+    await expect.poll(() => a.locator(`li[data-room="${id}"]`).count()).toBe(0);
+    await expect.poll(() => b.locator(`li[data-room="${id}"]`).count()).toBe(0);
+    await a.context().close();
+    await b.context().close();
+  });
+
+  it('labels the player\'s own table "Open" in the lobby', async () => {
+    const a = await player();
+    const id = await openTable(a);
+    await a.goto(`${env.server.url}/`);
+    await expect.poll(() => a.locator(`li[data-room="${id}"] a`).textContent()).toBe('Open');
+    const b = await player();
+    await expect.poll(() => b.locator(`li[data-room="${id}"] a`).textContent()).toBe('Join');
+    await a.context().close();
+    await b.context().close();
+  });
+
+  it('holds the aim after a click while the mouse goes to "Shoot"', async () => {
+    const page = await player();
+    await page.goto(`${env.server.url}/practice`);
+    const canvas = page.locator('canvas.table');
+    const aimShown = page.getByLabel('Aim', { exact: true });
+    const box = (await canvas.boundingBox())!;
+    const at = (fx: number, fy: number) => ({ x: box.x + box.width * fx, y: box.y + box.height * fy });
+    // Hovering aims.
+    const p1 = at(0.8, 0.3);
+    await page.mouse.move(p1.x, p1.y);
+    const first = await aimShown.textContent();
+    const p2 = at(0.2, 0.8);
+    await page.mouse.move(p2.x, p2.y, { steps: 5 });
+    const second = await aimShown.textContent();
+    expect(second).not.toBe(first);
+    // A click holds it: moving across the table to the button leaves it where it was.
+    await page.mouse.click(p1.x, p1.y);
+    const held = await aimShown.textContent();
+    const shoot = (await page.getByRole('button', { name: 'Shoot' }).boundingBox())!;
+    await page.mouse.move(p2.x, p2.y, { steps: 5 });
+    await page.mouse.move(shoot.x + shoot.width / 2, shoot.y + shoot.height / 2, { steps: 5 });
+    expect(await aimShown.textContent()).toBe(held);
+    // Pressing and dragging aims again.
+    await page.mouse.move(p2.x, p2.y);
+    await page.mouse.down();
+    await page.mouse.move(p2.x + 5, p2.y - 40, { steps: 5 });
+    await page.mouse.up();
+    expect(await aimShown.textContent()).not.toBe(held);
+    await page.context().close();
+  });
+
+  it('after a shot, shows the opponent the whole clock from when the balls stop', async () => {
+    const a = await player();
+    const id = await openTable(a, 30);
+    const b = await player();
+    await b.goto(`${env.server.url}/room/${id}`);
+    await b.getByRole('button', { name: 'Join' }).click();
+    const shoot = a.getByRole('button', { name: 'Shoot' });
+    await expect.poll(() => shoot.isEnabled(), { timeout: 10_000 }).toBe(true);
+    await shoot.click();
+    // While the break's balls roll, the clock shows more than the 30 s it will count from their stop.
+    const clock = b.getByRole('timer', { name: 'Shot clock' });
+    await expect.poll(async () => Number((await clock.textContent())?.replace(' s', '')), { timeout: 5_000 }).toBeGreaterThan(30);
+    await a.context().close();
+    await b.context().close();
+  });
+});
