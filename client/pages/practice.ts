@@ -95,7 +95,7 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
     if (mode.value === 'free') {
       run = null;
       setup(newGame('practice', [ME], { layout: layout.value as PracticeLayout }));
-      info.textContent = 'Free practice: aim with the mouse or the arrow keys, Space or Shoot to play.';
+      info.textContent = 'Free practice: aim with the mouse (a click holds the aim) or the arrow keys, Space or Shoot to play.';
     } else {
       const seed = Math.floor(Math.random() * 0xffffffff);
       const kind = runKind.value as PracticeKind;
