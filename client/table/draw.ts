@@ -112,12 +112,15 @@ export function drawBall(ctx: CanvasRenderingContext2D, b: DrawnBall, R: number)
     dot(ctx, b.x, b.y, R * 0.5);
     ctx.save();
     ctx.translate(b.x, b.y);
-    ctx.scale(1, -1); // text upright in a y-up world
+    // Text upright in a y-up world, set at 35 units to a ball of 50: a font of a few hundredths
+    // of a unit (metres) is clamped or dropped by some browsers (Firefox).
+    const unit = R / 50;
+    ctx.scale(unit, -unit);
     ctx.fillStyle = '#111';
-    ctx.font = `bold ${R * 0.7}px system-ui, sans-serif`;
+    ctx.font = 'bold 35px system-ui, sans-serif';
     ctx.textAlign = 'center';
     ctx.textBaseline = 'middle';
-    ctx.fillText(String(n), 0, R * 0.05);
+    ctx.fillText(String(n), 0, 2.5);
     ctx.restore();
   }
   // A highlight, so balls read as spheres.
