@@ -74,15 +74,22 @@ export function mountMatch(root: HTMLElement, _ctx: unknown, id: string): () => 
           animator?.stop();
         } else void run();
       });
+      // The shots, each a link; between them what else decided the match (the clock, a
+      // concession, a claim), so that the list ends where the result says.
+      const others: Partial<Record<MatchAction['type'], string>> = { clock: 'ran out of time', concede: 'conceded', claim: 'claimed the game' };
       list.append(
-        ...shotIndexes.map((i, k) => {
-          const a = m.actions[i] as Extract<MatchAction, { type: 'shot' }>;
-          return h('li', {}, h('a', { href: `/match/${id}#shot=${k + 1}`, onclick: (e: Event) => {
+        ...m.actions.flatMap((a, i) => {
+          if (a.type !== 'shot') {
+            const what = others[a.type];
+            return what && 'player' in a ? [h('li', { className: 'event' }, `${names(a.player)} ${what}`)] : [];
+          }
+          const k = shotIndexes.indexOf(i);
+          return [h('li', {}, h('a', { href: `/match/${id}#shot=${k + 1}`, onclick: (e: Event) => {
             e.preventDefault();
             history.replaceState(null, '', `/match/${id}#shot=${k + 1}`);
             current = k;
             void show(current++);
-          } }, `${names(a.player)}: ${a.shot.speed.toFixed(1)} m/s`));
+          } }, `${names(a.player)}: ${a.shot.speed.toFixed(1)} m/s`))];
         }),
       );
       const linked = /#shot=(\d+)/.exec(location.hash);

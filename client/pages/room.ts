@@ -99,7 +99,11 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
       ),
     );
     verdict.textContent = room.status === 'waiting' ? 'Waiting for an opponent.' : g?.verdict ? words(g.verdict.message) : `${nameOf(g?.turn ?? '')} to break.`;
-    if (room.status === 'over') verdict.textContent = `${room.winner ? nameOf(room.winner) : 'Nobody'} wins. ${g?.verdict ? words(g.verdict.message) : ''}`;
+    if (room.status === 'over') {
+      const winner = room.winner ? nameOf(room.winner) : 'Nobody';
+      const said = g?.verdict ? words(g.verdict.message) : '';
+      verdict.textContent = said.includes(`${winner} wins`) ? said : `${winner} wins. ${said}`;
+    }
     actions.replaceChildren();
     if (room.status === 'waiting' && !seated()) actions.append(h('button', { type: 'button', onclick: () => void session.request({ type: 'join', room: id }) }, 'Join'));
     if (room.status === 'waiting' && seated()) {

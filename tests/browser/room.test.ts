@@ -1,6 +1,6 @@
 // A table in Chromium as a player uses it: a waiting table shows its invite link and can be
 // closed; a click holds the aim while the mouse goes to "Shoot"; after a shot the opponent's
-// clock counts from when the balls stop.
+// clock counts from when the balls stop; a conceded match says so once, and its replay lists it.
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { chromiumAvailable, serverAndChromium } from '../support/browser.ts';
@@ -91,6 +91,29 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
     // While the break's balls roll, the clock shows more than the 30 s it will count from their stop.
     const clock = b.getByRole('timer', { name: 'Shot clock' });
     await expect.poll(async () => Number((await clock.textContent())?.replace(' s', '')), { timeout: 5_000 }).toBeGreaterThan(30);
+    await a.context().close();
+    await b.context().close();
+  });
+
+  it('ends a conceded match with one sentence, and its replay lists the concession', async () => {
+    const a = await player();
+    const id = await openTable(a);
+    const b = await player();
+    await b.goto(`${env.server.url}/room/${id}`);
+    await b.getByRole('button', { name: 'Join' }).click();
+    const shoot = a.getByRole('button', { name: 'Shoot' });
+    await expect.poll(() => shoot.isEnabled(), { timeout: 10_000 }).toBe(true);
+    await shoot.click();
+    await expect.poll(() => b.getByRole('button', { name: 'Concede' }).isVisible(), { timeout: 10_000 }).toBe(true);
+    await b.getByRole('button', { name: 'Concede' }).click();
+    const said = a.getByRole('status', { name: 'Referee' });
+    await expect.poll(() => said.textContent(), { timeout: 10_000 }).toMatch(/concedes; .+ wins$/);
+    expect((await said.textContent())!.match(/wins/g)).toHaveLength(1);
+    const { matches } = (await (await fetch(`${env.server.url}/api/matches?limit=1`)).json()) as { matches: { id: number }[] };
+    await a.goto(`${env.server.url}/match/${matches[0]!.id}`);
+    const shots = a.getByRole('list', { name: 'Shots' }).getByRole('listitem');
+    await expect.poll(() => shots.count(), { timeout: 10_000 }).toBe(2);
+    expect(await shots.nth(1).textContent()).toMatch(/ conceded$/);
     await a.context().close();
     await b.context().close();
   });
