@@ -19,8 +19,12 @@ export function mountLobby(root: HTMLElement, ctx: PageContext): () => void {
     h('option', { value: 'path' }, 'Full cue-ball path'),
     h('option', { value: 'none' }, 'No guidance'),
   );
+  // A kind's usual race, put in unless the player typed their own.
+  const usualRace = (k: string) => (k === 'threecushion' ? '15' : '1');
+  let kindBefore = kind.value;
   kind.addEventListener('change', () => {
-    race.value = kind.value === 'threecushion' ? '15' : '1';
+    if (race.value === '' || race.value === usualRace(kindBefore)) race.value = usualRace(kind.value);
+    kindBefore = kind.value;
   });
   const create = h(
     'form',
@@ -35,7 +39,15 @@ export function mountLobby(root: HTMLElement, ctx: PageContext): () => void {
   create.addEventListener('submit', (e) => {
     e.preventDefault();
     void session
-      .request({ type: 'create', kind: kind.value as LobbyRoom['kind'], raceTo: Number(race.value), shotClock: Number(clock.value), private: priv.checked, guidance: guidance.value as 'contact' })
+      .request({
+        type: 'create',
+        kind: kind.value as LobbyRoom['kind'],
+        // An empty field takes the server's default.
+        ...(race.value === '' ? {} : { raceTo: Number(race.value) }),
+        ...(clock.value === '' ? {} : { shotClock: Number(clock.value) }),
+        private: priv.checked,
+        guidance: guidance.value as 'contact',
+      })
       .then((m) => {
         if (m.type === 'room') ctx.navigate(`/room/${m.room.id}`);
         else if (m.type === 'error') note.textContent = m.message;

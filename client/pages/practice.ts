@@ -138,6 +138,7 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
   function doUndo(): void {
     try {
       setup(undo(game));
+      info.textContent = 'Shot undone.';
     } catch (err) {
       info.textContent = (err as Error).message;
     }
@@ -155,8 +156,10 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
     const w = view.toWorld(e.clientX, e.clientY);
     try {
       setup(placeBall(game, ME, { id: picked, x: w.x, y: w.y }));
-    } catch (err) {
-      info.textContent = (err as Error).message;
+      info.textContent = '';
+    } catch {
+      // (The rules' reason is in metres and table names; the player needs the gist.)
+      info.textContent = `The ${picked === 'cue' ? 'cue' : picked} ball cannot go there: it must lie on the cloth, clear of the other balls.`;
     }
     picked = null;
   }

@@ -93,6 +93,8 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
           'li',
           { className: g?.turn === p.id && room?.status === 'playing' ? 'on-turn' : '' },
           `${p.name}${p.id === me() ? ' (you)' : ''}: ${g ? (g.scores[p.id] ?? 0) : 0}`,
+          // Three-cushion: whose cue ball is whose (the player on turn strikes theirs).
+          g?.kind === 'threecushion' && g.turn === p.id && room?.status === 'playing' ? ` · plays ${cueBallId(g)}` : '',
           room?.frames ? ` (frames ${room.frames[p.id] ?? 0})` : '',
           p.connected ? '' : ' · disconnected',
         ),
@@ -129,6 +131,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
         redraw();
       });
       controls!.enable(myTurn());
+      controls!.element.hidden = !seated(); // a spectator has no cue
       redraw();
     }
   };

@@ -117,4 +117,25 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
     await a.context().close();
     await b.context().close();
   });
+
+  it('keeps a race the player typed across a change of game, and takes the default for an empty one', async () => {
+    const a = await player();
+    const race = a.getByLabel('Race to');
+    await a.getByLabel('Game').selectOption('threecushion');
+    expect(await race.inputValue()).toBe('15');
+    await race.fill('3');
+    await a.getByLabel('Game').selectOption('nineball');
+    expect(await race.inputValue()).toBe('3');
+    await race.fill('');
+    await a.getByRole('button', { name: 'Create table' }).click();
+    await a.waitForURL(/\/room\/[\w-]+$/);
+    await expect.poll(() => a.getByRole('heading', { level: 2 }).textContent()).toBe('Nine-ball, race to 1');
+    // Someone else watching the table has no cue.
+    const c = await player();
+    await c.goto(a.url());
+    await expect.poll(() => c.getByText('Waiting for an opponent.').count()).toBe(1);
+    expect(await c.getByRole('button', { name: 'Shoot' }).count()).toBe(0);
+    await a.context().close();
+    await c.context().close();
+  });
 });
