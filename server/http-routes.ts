@@ -1,4 +1,5 @@
-// Plain HTTP: the client's files, /healthz and the JSON API under /api/. Everything else is 404.
+// Plain HTTP: the client's files, /healthz and the JSON API under /api/. Everything else is 404
+// (the client's page for a browser, JSON otherwise).
 import type { IncomingMessage, ServerResponse } from 'node:http';
 import type { Api } from './api/routes.ts';
 import type { StaticFile } from './static-files.ts';
@@ -43,6 +44,12 @@ export function createRequestHandler(files: ReadonlyMap<string, StaticFile>, hea
     }
     if (path === '/') {
       send(res, 503, 'text/plain; charset=utf-8', 'client not built: run `npm run build`\n');
+      return;
+    }
+    // A browser asking for a page that does not exist gets the client, which says so in words.
+    const index = files.get('/');
+    if (index && /\btext\/html\b/.test(req.headers.accept ?? '')) {
+      send(res, 404, index.contentType, index.body);
       return;
     }
     send(res, 404, 'application/json', JSON.stringify({ error: 'not found' }));

@@ -43,18 +43,19 @@ export function speedRows(s: CushionState, p: CushionParams): SpeedRow[] {
 
 /** A horizontal bar chart of the times, each bar labelled with its error. */
 export function speedChartSvg(rows: readonly SpeedRow[]): string {
-  const w = 560;
+  const w = 640;
   const bar = 22;
   const left = 250;
   const max = Math.max(...rows.map((r) => r.us), 1e-9);
   const h = rows.length * (bar + 8) + 30;
   const parts = rows.map((r, i) => {
     const y = 10 + i * (bar + 8);
-    const len = ((w - left - 90) * r.us) / max;
+    const len = ((w - left - 150) * r.us) / max; // room for the value after the longest bar
     return `<text x="${left - 8}" y="${y + 15}" text-anchor="end" font-size="12">${r.name}</text>` +
       `<rect data-bar="${r.name}" x="${left}" y="${y}" width="${len.toFixed(1)}" height="${bar}" fill="${i === rows.length - 1 ? '#d62728' : '#1f77b4'}"><title>${r.us.toFixed(2)} µs, error ${r.error.toExponential(1)} V0</title></rect>` +
       `<text x="${(left + len + 6).toFixed(1)}" y="${y + 15}" font-size="11">${r.us.toFixed(1)} µs, ${r.error.toExponential(1)} V0</text>`;
   });
-  return `<svg xmlns="http://www.w3.org/2000/svg" width="${w}" height="${h}" viewBox="0 0 ${w} ${h}" font-family="Helvetica, Arial, sans-serif">${parts.join('')}` +
+  // On white, as the lab's other figures are.
+  return `<svg xmlns="http://www.w3.org/2000/svg" width="${w}" height="${h}" viewBox="0 0 ${w} ${h}" font-family="Helvetica, Arial, sans-serif"><rect width="${w}" height="${h}" fill="#fff"/>${parts.join('')}` +
     `<text x="${left}" y="${h - 4}" font-size="11" fill="#555">time per impact (µs); label: error against the converged solution</text></svg>`;
 }

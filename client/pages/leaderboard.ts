@@ -17,7 +17,7 @@ export function mountLeaderboard(root: HTMLElement): () => void {
   const table = h('table', { className: 'board', 'aria-label': 'Leaderboard' }, h('thead', {}, h('tr', {}, ...['#', 'Player', 'Rating', 'RD', 'Games', 'Wins'].map((t) => h('th', {}, t)))), body);
   const prev = h('button', { type: 'button', onclick: () => load(kind, Math.max(0, offset - 20)) }, 'Previous');
   const next = h('button', { type: 'button', onclick: () => load(kind, offset + 20) }, 'Next');
-  root.append(h('section', { 'aria-label': 'Leaderboard' }, h('h2', {}, 'Leaderboard'), tabs, table, h('p', {}, prev, ' ', next), info));
+  root.append(h('section', { 'aria-label': 'Leaderboard' }, h('h2', {}, 'Leaderboard'), tabs, h('div', { className: 'scroll-x' }, table), h('p', {}, prev, ' ', next), info));
   let live = true;
   const load = (k: string, o: number) => {
     kind = k;

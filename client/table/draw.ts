@@ -107,6 +107,12 @@ export function drawBall(ctx: CanvasRenderingContext2D, b: DrawnBall, R: number)
     ctx.fillRect(b.x - R, b.y - R * 0.55, 2 * R, R * 1.1);
   }
   ctx.restore();
+  // A dark rim, so a ball the colour of the cloth (snooker's green) still stands out.
+  ctx.strokeStyle = 'rgba(0,0,0,0.5)';
+  ctx.lineWidth = R * 0.08;
+  ctx.beginPath();
+  ctx.arc(b.x, b.y, R, 0, 2 * Math.PI);
+  ctx.stroke();
   if (Number.isInteger(n) && n >= 1 && n <= 15) {
     ctx.fillStyle = '#f8f6ef';
     dot(ctx, b.x, b.y, R * 0.5);

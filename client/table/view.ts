@@ -43,7 +43,9 @@ export class TableView {
     const w = Math.max(200, parent.clientWidth);
     const worldW = this.spec.length + 2 * RAIL;
     const worldH = this.spec.width + 2 * RAIL;
-    const h = Math.min(w * (worldH / worldW), window.innerHeight * 0.7);
+    // At most 70% of the window's height, and on a short window (a phone on its side) low
+    // enough that the controls below it fit on the same screen.
+    const h = Math.min(w * (worldH / worldW), Math.max(150, Math.min(window.innerHeight * 0.7, window.innerHeight - 190)));
     const cssW = Math.min(w, h * (worldW / worldH));
     const dpr = window.devicePixelRatio || 1;
     this.canvas.style.width = `${cssW}px`;

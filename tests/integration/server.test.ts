@@ -42,7 +42,13 @@ describe('the server', () => {
     expect(bundle.status).toBe(200);
     expect(bundle.headers.get('content-type')).toMatch(/javascript/);
     expect((await fetch(`${server.url}/../package.json`)).status).toBe(404);
-    expect((await fetch(`${server.url}/nothing-here`)).status).toBe(404);
+    const missing = await fetch(`${server.url}/nothing-here`);
+    expect(missing.status).toBe(404);
+    expect(await missing.json()).toEqual({ error: 'not found' });
+    // A browser gets the client, whose router says there is no such page.
+    const inBrowser = await fetch(`${server.url}/nothing-here`, { headers: { accept: 'text/html,application/xhtml+xml,*/*;q=0.8' } });
+    expect(inBrowser.status).toBe(404);
+    expect(await inBrowser.text()).toContain('src="/app.js"');
     expect((await fetch(`${server.url}/healthz`, { method: 'POST' })).status).toBe(405);
   });
 
