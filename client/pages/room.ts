@@ -19,6 +19,9 @@ const stats = { mismatches: 0 };
 
 type ShotMessage = Extract<ServerMessage, { type: 'shot' }>;
 
+/** How long a first click on "Concede" waits for the second (ms). */
+const CONFIRM_MS = 4000;
+
 export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () => void {
   const { session } = ctx;
   let room: RoomView | null = null;
@@ -33,6 +36,8 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   const animations: Outcome[] = [];
   /** The shot clock's end, from the last room or shot message (ms since the epoch). */
   let deadline: number | undefined;
+  /** When "Concede" was clicked once (ms since the epoch). */
+  let concedeArmedAt = -Infinity;
   /** Shots wait while the connection is down: the server could not take them. */
   let online = session.status !== 'reconnecting';
 
@@ -118,7 +123,18 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
         copied,
       );
     }
-    if (room.status === 'playing' && seated()) actions.append(h('button', { type: 'button', onclick: () => session.send({ type: 'concede', room: id }) }, 'Concede'));
+    if (room.status === 'playing' && seated()) {
+      // Conceding loses the match: a second click within a few seconds confirms it.
+      const armed = Date.now() - concedeArmedAt < CONFIRM_MS;
+      actions.append(h('button', { type: 'button', onclick: () => {
+        if (armed) session.send({ type: 'concede', room: id });
+        else {
+          concedeArmedAt = Date.now();
+          setTimeout(render, CONFIRM_MS);
+        }
+        render();
+      } }, armed ? 'Really concede? Click again' : 'Concede'));
+    }
     if (room.status === 'over' && seated()) actions.append(h('button', { type: 'button', onclick: () => session.send({ type: 'rematch', room: id }) }, room.rematch?.includes(me() ?? '') ? 'Rematch asked' : 'Rematch'));
     if (room.status === 'playing' && room.players.some((p) => !p.connected && p.heldUntil !== undefined && p.heldUntil <= Date.now()) && seated())
       actions.append(h('button', { type: 'button', onclick: () => session.send({ type: 'claim', room: id }) }, 'Claim the game'));

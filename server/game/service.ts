@@ -5,7 +5,7 @@
 import { randomBytes } from 'node:crypto';
 import type { ClientMessage, PlayerRef, ServerMessage } from '../../shared/protocol/index.ts';
 import { MAX_OPEN_ROOMS_PER_PLAYER } from '../../shared/protocol/index.ts';
-import { concede, decide, EMPTY_TALLY, placeCueBall, playShot, shotClockExpired, tallied, type Game, type MatchAction } from '../../shared/rules/index.ts';
+import { claimGame, concede, decide, EMPTY_TALLY, placeCueBall, playShot, shotClockExpired, tallied, type Game, type MatchAction } from '../../shared/rules/index.ts';
 import type { MatchResult, RoomChange, Store } from '../store.ts';
 import { hashToken, newToken } from '../tokens.ts';
 import { describeError, ServiceError } from './errors.ts';
@@ -422,7 +422,7 @@ export class GameService {
     if (dropped === undefined) throw new ServiceError('not-claimable', `${other.name} is connected`);
     const until = dropped + this.options.seatHoldMs;
     if (this.now() < until) throw new ServiceError('not-claimable', `${other.name}'s seat is held for ${Math.ceil((until - this.now()) / 1000)} s more`);
-    this.move(room, afterMove(room.state, concede(game, other.id), 'claim', this.now()), { type: 'claim', player: player.id }, conn, msg.id);
+    this.move(room, afterMove(room.state, claimGame(game, player.id), 'claim', this.now()), { type: 'claim', player: player.id }, conn, msg.id);
   }
 
   private rematch(conn: ConnId, player: PlayerRef, msg: Msg<'rematch'>): void {

@@ -280,6 +280,18 @@ export function concede(game: Game, player: PlayerId): Game {
   return g;
 }
 
+/**
+ * The player claims the game of an opponent who left (their seat's hold ran out): scored as the
+ * opponent's concession, and said as what it is.
+ */
+export function claimGame(game: Game, player: PlayerId): Game {
+  if (!game.players.includes(player)) throw new RuleError('bad-player', `"${player}" is not a player of this game`);
+  const absent = opponent(game, player);
+  const g = concede(game, absent);
+  g.verdict = { ...g.verdict!, message: `${player} claims the game: ${absent} has left; ${player} wins` };
+  return g;
+}
+
 /** The balls the player on turn may legally meet first (for a bot or the display). */
 export function legalTargets(game: Game): string[] {
   switch (game.kind) {

@@ -2,7 +2,7 @@
 // replayed with the shared rules and physics. Each shot's outcome hash comes out of the replay, to
 // compare with what the server broadcast; the achievements (snooker breaks, three-cushion runs,
 // nine-ball break-and-runs) are read from the games the replay passes through.
-import { concede, decide, newGame, placeCueBall } from './index.ts';
+import { claimGame, concede, decide, newGame, placeCueBall } from './index.ts';
 import { opponent } from './common.ts';
 import { playShot, shotClockExpired } from './play.ts';
 import type { Choice, Game, PlayerId, Point, StrikeParams } from './types.ts';
@@ -57,7 +57,7 @@ export function replayMatch(record: MatchRecord): Replayed {
         game = concede(game, a.player);
         break;
       case 'claim':
-        game = concede(game, opponent(game, a.player));
+        game = claimGame(game, a.player);
         break;
       case 'clock':
         game = shotClockExpired(game);

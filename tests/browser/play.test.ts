@@ -153,6 +153,7 @@ describe.skipIf(!chromiumAvailable())('the browser client', () => {
 
       // A concedes; both pages say who won.
       await a.getByRole('button', { name: 'Concede' }).click();
+      await a.getByRole('button', { name: 'Really concede? Click again' }).click();
       await expect.poll(() => room().status, { timeout: 10_000 }).toBe('over');
       const winner = room().players.find((p) => p.id === room().winner)!.name;
       await expect.poll(() => b.locator('.verdict').textContent()).toContain(`${winner} wins`);

@@ -105,7 +105,11 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
     await expect.poll(() => shoot.isEnabled(), { timeout: 10_000 }).toBe(true);
     await shoot.click();
     await expect.poll(() => b.getByRole('button', { name: 'Concede' }).isVisible(), { timeout: 10_000 }).toBe(true);
+    // One click asks again; only the second concedes.
     await b.getByRole('button', { name: 'Concede' }).click();
+    await b.waitForTimeout(300);
+    expect(await b.getByRole('status', { name: 'Referee' }).textContent()).not.toMatch(/concedes/);
+    await b.getByRole('button', { name: 'Really concede? Click again' }).click();
     const said = a.getByRole('status', { name: 'Referee' });
     await expect.poll(() => said.textContent(), { timeout: 10_000 }).toMatch(/concedes; .+ wins$/);
     expect((await said.textContent())!.match(/wins/g)).toHaveLength(1);

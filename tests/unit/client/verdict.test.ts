@@ -12,6 +12,7 @@ describe('inWords', () => {
     expect(inWords('foul by 5 (in-off, no-contact): 4 to 1', names)).toBe('foul by Bob (in-off, no ball hit): 4 to Ann');
     expect(inWords('point for 1 (3 cushions before the second ball; run 2)', names)).toBe('point for Ann (3 cushions before the second ball; run 2)');
     expect(inWords('5 ran out of time: foul by 5 (no-contact): 1 has ball in hand', names)).toBe('Bob ran out of time: foul by Bob (no ball hit): Ann has ball in hand');
+    expect(inWords('1 claims the game: 5 has left; 1 wins', names)).toBe('Ann claims the game: Bob has left; Ann wins');
     expect(inWords('illegal break by 1: 5 may play on, re-rack and break, or have 1 break again', names)).toBe(
       'illegal break by Ann: Bob may play on, re-rack and break, or have Ann break again',
     );

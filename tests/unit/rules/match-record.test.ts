@@ -4,6 +4,7 @@ import { botShot } from '../../../bots/strategy.ts';
 import { simulate } from '../../../shared/physics/index.ts';
 import {
   achievements,
+  claimGame,
   concede,
   newGame,
   placeCueBall,
@@ -53,9 +54,12 @@ describe('replayMatch', () => {
     let g = playShot(start, { ...foul, player: 'a' }).game;
     g = placeCueBall(g, 'b', { x: 0.2, y: 0.3 });
     g = shotClockExpired(g);
-    g = concede(g, 'b');
+    g = claimGame(g, 'a');
     expect(replayMatch({ start, actions }).game).toEqual(g);
     expect(g.winner).toBe('a');
+    // A claim is scored as the absent player's concession and said as a claim.
+    expect(g).toEqual({ ...concede(shotClockExpired(placeCueBall(playShot(start, { ...foul, player: 'a' }).game, 'b', { x: 0.2, y: 0.3 })), 'b'), verdict: g.verdict });
+    expect(g.verdict).toMatchObject({ loss: 'concession', rackWinner: 'a', message: 'a claims the game: b has left; a wins' });
     const frame = replayMatch({ start: newGame('snooker', ['a', 'b']), actions: [{ type: 'concede', player: 'a' }, { type: 'frame', players: ['b', 'a'], seed: 9 }] });
     expect(frame.game).toEqual(newGame('snooker', ['b', 'a'], { seed: 9 }));
   });
