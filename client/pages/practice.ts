@@ -71,6 +71,7 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
       tableBox.after(controls.element);
       view.canvas.addEventListener('pointerdown', placeDown);
       view.canvas.addEventListener('pointerup', placeUp);
+      view.canvas.addEventListener('pointermove', placeMove);
     }
     refresh();
   };
@@ -151,6 +152,12 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
     const near = game.balls.find((b) => Math.hypot(b.x - w.x, b.y - w.y) < view!.spec.ballRadius * 1.5);
     picked = near?.id ?? null;
   }
+  /** The picked ball follows the pointer until it is let go. */
+  function placeMove(e: PointerEvent): void {
+    if (!picked || !view) return;
+    const w = view.toWorld(e.clientX, e.clientY);
+    view.draw(game.balls.map((b) => (b.id === picked ? { id: b.id, x: w.x, y: w.y } : b)));
+  }
   function placeUp(e: PointerEvent): void {
     if (!picked || !view) return;
     const w = view.toWorld(e.clientX, e.clientY);
@@ -160,6 +167,7 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
     } catch {
       // (The rules' reason is in metres and table names; the player needs the gist.)
       info.textContent = `The ${picked === 'cue' ? 'cue' : picked} ball cannot go there: it must lie on the cloth, clear of the other balls.`;
+      refresh(); // back where it was
     }
     picked = null;
   }

@@ -3,6 +3,8 @@
 // clock counts from when the balls stop; a conceded match says so once, and its replay lists it.
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
+import { tableSpec } from '../../shared/physics/index.ts';
+import { newGame } from '../../shared/rules/index.ts';
 import { chromiumAvailable, serverAndChromium } from '../support/browser.ts';
 
 describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
@@ -141,5 +143,39 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
     expect(await c.getByRole('button', { name: 'Shoot' }).count()).toBe(0);
     await a.context().close();
     await c.context().close();
+  });
+
+  it('practice: a ball being placed follows the pointer, and a refused spot says why and puts it back', async () => {
+    const page = await player();
+    await page.goto(`${env.server.url}/practice`);
+    await page.getByLabel('Place balls').check();
+    const g = newGame('practice', ['me'], { layout: 'nineball' });
+    const spec = tableSpec(g.table);
+    const box = (await page.locator('canvas.table').boundingBox())!;
+    const scale = box.width / (spec.length + 2 * 0.09); // the rail's width in client/table/draw.ts
+    const toScreen = (p: { x: number; y: number }) => ({ x: box.x + box.width / 2 + p.x * scale, y: box.y + box.height / 2 - p.y * scale });
+    /** The canvas's colour under a point of the page. */
+    const pixel = (p: { x: number; y: number }) => page.evaluate(({ x, y }) => {
+      const c = document.querySelector('canvas.table') as HTMLCanvasElement;
+      const r = c.getBoundingClientRect();
+      const dpr = c.width / r.width;
+      return [...c.getContext('2d')!.getImageData(Math.round((x - r.left) * dpr), Math.round((y - r.top) * dpr), 1, 1).data];
+    }, p);
+    const cue = g.balls.find((b) => b.id === 'cue')!;
+    const open = toScreen({ x: -0.3, y: 0.3 });
+    const cloth = await pixel(open);
+    const from = toScreen(cue);
+    await page.mouse.move(from.x, from.y);
+    await page.mouse.down();
+    await page.mouse.move(open.x, open.y, { steps: 5 });
+    const [r, gr, b] = await pixel(open);
+    expect(Math.min(r!, gr!, b!)).toBeGreaterThan(200); // the white cue ball under the pointer
+    // Let go on the rack's front ball: refused, said plainly, and the ball goes back.
+    const apex = toScreen(g.balls.find((x) => x.id === '1')!);
+    await page.mouse.move(apex.x, apex.y, { steps: 5 });
+    await page.mouse.up();
+    await expect.poll(() => page.locator('.verdict').textContent()).toBe('The cue ball cannot go there: it must lie on the cloth, clear of the other balls.');
+    expect(await pixel(open)).toEqual(cloth);
+    await page.context().close();
   });
 });
