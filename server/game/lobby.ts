@@ -78,12 +78,13 @@ export class Lobby {
     for (const conn of this.sockets.get(player.id) ?? []) this.players.set(conn, player);
   }
 
-  /** The public rooms not yet over, oldest first. */
+  /** The public rooms not yet over, oldest first; a game both players have left (paused) is not shown. */
   listing(): LobbyRoom[] {
     const out: LobbyRoom[] = [];
     for (const room of this.rooms.values()) {
       const s = room.state;
       if (s.private || (s.status !== 'waiting' && s.status !== 'playing')) continue;
+      if (s.status === 'playing' && s.seats.every((p) => !this.connected(p.id))) continue;
       out.push({ id: s.id, kind: s.kind, raceTo: s.raceTo, players: s.seats.map((p) => ({ id: p.id, name: p.name })), spectators: room.spectators.size, status: s.status });
     }
     return out;

@@ -149,7 +149,12 @@ describe('the game service', () => {
     expect(seen).toMatchObject({ status: 'playing', stateId: 1 });
     expect(seen.deadline).toBeUndefined();
     expect(h.store.resultCount()).toBe(0);
+    // Nor is the paused game offered in the lobby.
+    h.send(3, { type: 'lobby' });
+    expect(last(h, 3, 'lobby').rooms).toEqual([]);
     h.send(7, { type: 'hello', token: annToken });
+    h.send(3, { type: 'lobby' });
+    expect(last(h, 3, 'lobby').rooms.map((r) => r.id)).toEqual([room.id]);
     const back = last(h, 7, 'room').room;
     expect(back).toMatchObject({ stateId: 1, deadline: h.clock + 30_000 });
     expect(last(h, 3, 'room').room.deadline).toBe(h.clock + 30_000);
