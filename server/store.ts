@@ -150,7 +150,7 @@ export class Store {
         'INSERT INTO records (kind, what, player_id, value, better, match_id, practice_id, created_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?)',
       ),
       finishMatch: db.prepare<[number, number]>('UPDATE matches SET finished_at = ? WHERE id = ? AND finished_at IS NULL'),
-      result: db.prepare<[number], { winner: number; loser: number; how: string; scores: string }>('SELECT winner, loser, how, scores FROM results WHERE match_id = ?'),
+      result: db.prepare<[number], { winner: number; loser: number; how: string; scores: string; rated: number }>('SELECT winner, loser, how, scores, rated FROM results WHERE match_id = ?'),
       resultCount: db.prepare<[], { n: number }>('SELECT count(*) AS n FROM results'),
       // The page is cut from the covering index ratings_board first, so that an OFFSET skips index
       // entries only, not a rating row and a player row for each place skipped.
@@ -282,9 +282,9 @@ export class Store {
     return new Map(this.s.shotCounts.all(matchId).map((r) => [String(r.player), r.n]));
   }
 
-  matchResult(matchId: number): { winner: number; loser: number; how: string; scores: unknown } | undefined {
+  matchResult(matchId: number): { winner: number; loser: number; how: string; scores: unknown; rated: boolean } | undefined {
     const r = this.s.result.get(matchId);
-    return r && { ...r, scores: JSON.parse(r.scores) as unknown };
+    return r && { ...r, scores: JSON.parse(r.scores) as unknown, rated: r.rated === 1 };
   }
 
   /** A page of the leaderboard of a kind, best first, and how many players it has. */

@@ -109,7 +109,8 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     if (room.status === 'over') {
       const winner = room.winner ? nameOf(room.winner) : 'Nobody';
       const said = g?.verdict ? words(g.verdict.message) : '';
-      verdict.textContent = said.includes(`${winner} wins`) ? said : `${winner} wins. ${said}`;
+      const end = said.includes(`${winner} wins`) ? said : `${winner} wins. ${said}`.trim();
+      verdict.textContent = `${/[.!?]$/.test(end) ? end : `${end}.`}${room.rated === false ? ' Not rated: each player must take at least two shots.' : ''}`;
     }
     actions.replaceChildren();
     if (room.status === 'waiting' && !seated()) actions.append(h('button', { type: 'button', onclick: () => void session.request({ type: 'join', room: id }) }, 'Join'));

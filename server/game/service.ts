@@ -540,10 +540,13 @@ export class GameService {
   }
 
   private view(room: Room) {
-    return roomView(room, (p) => {
+    const view = roomView(room, (p) => {
       const dropped = this.lobby.droppedSince(p.id);
       return dropped === undefined ? { connected: true } : { connected: false, heldUntil: dropped + this.options.seatHoldMs };
     });
+    const s = room.state;
+    const result = s.status === 'over' && s.matchId !== null ? this.store.matchResult(s.matchId) : undefined;
+    return result === undefined ? view : { ...view, rated: result.rated };
   }
 
   /** `room` to everyone there; the one who asked gets it with `re`. */

@@ -43,6 +43,8 @@ export interface RoomView {
   readonly rematch?: readonly string[];
   /** The winner, once over. */
   readonly winner?: string | null;
+  /** Once over: whether the match counts for the ratings (each player took at least two shots). */
+  readonly rated?: boolean;
 }
 
 export interface LobbyRoom {

@@ -211,6 +211,27 @@ describe('the game service', () => {
     expect(h.store.resultCount()).toBe(1);
   });
 
+  it('says once a match is over whether it counts for the ratings: each player took two shots', () => {
+    h = openHarness();
+    let room = table(h);
+    h.send(1, { type: 'concede', room: room.id });
+    expect(last(h, 2, 'room').room).toMatchObject({ status: 'over', rated: false });
+    h.close();
+    h = openHarness();
+    room = table(h);
+    const soft = { ball: 'cue', heading: Math.PI, speed: 0.05, side: 0, top: 0 };
+    let state = { stateId: room.stateId, turn: room.game!.turn };
+    for (let k = 0; k < 4; k++) {
+      const conn = state.turn === room.players[0]!.id ? 1 : 2;
+      const got = h.send(conn, { type: 'shot', room: room.id, stateId: state.stateId, shot: soft }).get(conn)!;
+      const m = got.find((x) => x.type === 'shot') as Extract<ServerMessage, { type: 'shot' }>;
+      state = { stateId: m.stateId, turn: m.game.turn };
+    }
+    expect(last(h, 1, 'room').room.rated).toBeUndefined(); // not over yet
+    h.send(2, { type: 'concede', room: room.id });
+    expect(last(h, 1, 'room').room).toMatchObject({ status: 'over', rated: true });
+  });
+
   it('gives a rematch in the same room when both ask, the other player breaking', () => {
     h = openHarness();
     const room = table(h);
