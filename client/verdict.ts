@@ -21,7 +21,10 @@ const FOULS: Readonly<Record<string, string>> = {
 const PLAYER = /(?<=foul on the break by |foul by |break by |point for |: |; | to |have |and |^)([\w-]+)(?=[\s:;,)]|$)/g;
 
 export function inWords(message: string, names: (id: string) => string | undefined): string {
-  return message
+  const said = message
     .replace(/\(([a-z-]+(?:, [a-z-]+)*)\)/g, (m, codes: string) => (codes.split(', ').every((c) => FOULS[c]) ? `(${codes.split(', ').map((c) => FOULS[c]).join(', ')})` : m))
-    .replace(PLAYER, (id: string) => names(id) ?? id);
+    .replace(PLAYER, (id: string) => names(id) ?? id)
+    // Snooker's reds are told apart by the rules (red1, red2...), not by players.
+    .replace(/\bred\d+\b/g, 'a red');
+  return said.charAt(0).toUpperCase() + said.slice(1);
 }

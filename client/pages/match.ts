@@ -53,7 +53,9 @@ export function mountMatch(root: HTMLElement, _ctx: unknown, id: string): () => 
       let current = 0;
       let playing = false;
       const shotIndexes = m.actions.map((a, i) => (a.type === 'shot' ? i : -1)).filter((i) => i >= 0);
+      const links: HTMLAnchorElement[] = [];
       const show = async (k: number) => {
+        links.forEach((a, j) => (j === k ? a.setAttribute('aria-current', 'step') : a.removeAttribute('aria-current')));
         const i = shotIndexes[k]!;
         const a = m.actions[i] as Extract<MatchAction, { type: 'shot' }>;
         const played = playShot(before[i]!, { ...a.shot, player: a.player } as never, a.cueBall);
@@ -72,7 +74,10 @@ export function mountMatch(root: HTMLElement, _ctx: unknown, id: string): () => 
         if (playing) {
           playing = false;
           animator?.stop();
-        } else void run();
+        } else {
+          if (current >= shotIndexes.length) current = 0; // from the start again
+          void run();
+        }
       });
       // The shots, each a link; between them what else decided the match (the clock, a
       // concession, a claim), so that the list ends where the result says.
@@ -84,12 +89,17 @@ export function mountMatch(root: HTMLElement, _ctx: unknown, id: string): () => 
             return what && 'player' in a ? [h('li', { className: 'event' }, `${names(a.player)} ${what}`)] : [];
           }
           const k = shotIndexes.indexOf(i);
-          return [h('li', {}, h('a', { href: `/match/${id}#shot=${k + 1}`, onclick: (e: Event) => {
+          const link = h('a', { href: `/match/${id}#shot=${k + 1}`, onclick: (e: Event) => {
             e.preventDefault();
             history.replaceState(null, '', `/match/${id}#shot=${k + 1}`);
+            // A shot picked while the replay plays: the replay stops there.
+            playing = false;
+            animator?.stop();
             current = k;
             void show(current++);
-          } }, `${names(a.player)}: ${a.shot.speed.toFixed(1)} m/s`))];
+          } }, `${names(a.player)}: ${a.shot.speed.toFixed(1)} m/s`);
+          links.push(link);
+          return [h('li', {}, link)];
         }),
       );
       const linked = /#shot=(\d+)/.exec(location.hash);

@@ -19,12 +19,19 @@ const stats = { mismatches: 0 };
 
 type ShotMessage = Extract<ServerMessage, { type: 'shot' }>;
 
+/** The pockets as the screen shows them (+x to the right, +y up; shared/rules/pockets.ts). */
+const POCKET_NAMES: Readonly<Record<string, string>> = {
+  BL: 'upper left corner', BR: 'lower left corner', ML: 'upper side', MR: 'lower side', TL: 'upper right corner', TR: 'lower right corner',
+};
+
 /** How long a first click on "Concede" waits for the second (ms). */
 const CONFIRM_MS = 4000;
 
 export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () => void {
   const { session } = ctx;
   let room: RoomView | null = null;
+  /** A room message that came while a shot played, applied when it has (render). */
+  let pendingRoom: RoomView | null = null;
   let view: TableView | null = null;
   let aim: Aim | null = null;
   let animator: Animator | null = null;
@@ -84,6 +91,11 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   };
 
   const render = () => {
+    if (!busy && pendingRoom) {
+      room = pendingRoom;
+      deadline = pendingRoom.deadline;
+      pendingRoom = null;
+    }
     if (!room) return;
     // A room message that came while a shot played (a new frame, a placement) applies now.
     if (!busy && room.stateId > stateId) {
@@ -98,6 +110,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
           'li',
           { className: g?.turn === p.id && room?.status === 'playing' ? 'on-turn' : '' },
           `${p.name}${p.id === me() ? ' (you)' : ''}: ${g ? (g.scores[p.id] ?? 0) : 0}`,
+          g?.kind === 'eightball' && g.groups ? ` · ${g.groups[p.id]}` : '',
           // Three-cushion: whose cue ball is whose (the player on turn strikes theirs).
           g?.kind === 'threecushion' && g.turn === p.id && room?.status === 'playing' ? ` · plays ${cueBallId(g)}` : '',
           room?.frames ? ` (frames ${room.frames[p.id] ?? 0})` : '',
@@ -109,7 +122,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     if (room.status === 'over') {
       const winner = room.winner ? nameOf(room.winner) : 'Nobody';
       const said = g?.verdict ? words(g.verdict.message) : '';
-      const end = said.includes(`${winner} wins`) ? said : `${winner} wins. ${said}`.trim();
+      const end = said.includes(winner) && / wins\b/.test(said) ? said : `${winner} wins. ${said}`.trim();
       verdict.textContent = `${/[.!?]$/.test(end) ? end : `${end}.`}${room.rated === false ? ' Not rated: each player must take at least two shots.' : ''}`;
     }
     actions.replaceChildren();
@@ -136,7 +149,11 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
         render();
       } }, armed ? 'Really concede? Click again' : 'Concede'));
     }
-    if (room.status === 'over' && seated()) actions.append(h('button', { type: 'button', onclick: () => session.send({ type: 'rematch', room: id }) }, room.rematch?.includes(me() ?? '') ? 'Rematch asked' : 'Rematch'));
+    if (room.status === 'over' && seated()) {
+      actions.append(h('button', { type: 'button', onclick: () => session.send({ type: 'rematch', room: id }) }, room.rematch?.includes(me() ?? '') ? 'Rematch asked' : 'Rematch'));
+      const asking = room.rematch?.find((pid) => pid !== me());
+      if (asking !== undefined) actions.append(h('span', { className: 'note', role: 'status' }, `${nameOf(asking)} asks for a rematch.`));
+    }
     if (room.status === 'playing' && room.players.some((p) => !p.connected && p.heldUntil !== undefined && p.heldUntil <= Date.now()) && seated())
       actions.append(h('button', { type: 'button', onclick: () => session.send({ type: 'claim', room: id }) }, 'Claim the game'));
     if (!seated()) actions.append(h('span', { className: 'note' }, `Watching · ${room.spectators} watching`));
@@ -154,7 +171,13 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   };
 
   const pushOut = h('input', { type: 'checkbox', 'aria-label': 'Push-out' });
-  const called = h('select', { 'aria-label': 'Called pocket' }, ...POCKETS.map((p) => h('option', { value: p }, p)));
+  // No call or nomination is made until the player makes one: a default would be a silent choice.
+  const called = h(
+    'select',
+    { 'aria-label': 'Called pocket' },
+    h('option', { value: '' }, 'choose a pocket'),
+    ...POCKETS.map((p) => h('option', { value: p }, POCKET_NAMES[p] ?? p)),
+  );
   const nominated = h('select', { 'aria-label': 'Nominated ball' });
   const renderDeclarations = () => {
     declarations.replaceChildren();
@@ -164,7 +187,13 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     if (g.kind === 'eightball' && g.groups !== null && legalTargets(g).includes('8')) declarations.append(h('label', {}, 'Called pocket for the 8 ', called));
     if (g.kind === 'snooker' && (g.on === 'colour' || g.freeBall)) {
       const options = g.freeBall ? g.balls.filter((b) => b.id !== 'cue').map((b) => b.id) : ['yellow', 'green', 'brown', 'blue', 'pink', 'black'];
-      nominated.replaceChildren(...options.filter((o) => g.balls.some((b) => b.id === o)).map((o) => h('option', { value: o }, o)));
+      const kept = nominated.value;
+      const onTable = options.filter((o) => g.balls.some((b) => b.id === o));
+      nominated.replaceChildren(
+        h('option', { value: '' }, g.freeBall ? 'no free ball' : 'the colour hit first'),
+        ...onTable.map((o) => h('option', { value: o }, o)),
+      );
+      nominated.value = onTable.includes(kept) ? kept : '';
       declarations.append(h('label', {}, 'Nominate ', nominated));
     }
     for (const choice of g.choices) {
@@ -178,7 +207,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     const s = aim!.state;
     const shot: Omit<Shot, 'player'> = { ball: cueBallId(g), heading: s.heading, speed: s.speed, side: s.side, top: s.top };
     if (g.kind === 'nineball' && g.phase === 'push-out' && pushOut.checked) shot.pushOut = true;
-    if (g.kind === 'eightball' && g.groups !== null && legalTargets(g).includes('8')) shot.calledPocket = called.value as Shot['calledPocket'];
+    if (g.kind === 'eightball' && g.groups !== null && legalTargets(g).includes('8') && called.value) shot.calledPocket = called.value as Shot['calledPocket'];
     if (g.kind === 'snooker' && (g.on === 'colour' || g.freeBall) && nominated.value) shot.nominated = nominated.value;
     return shot;
   };
@@ -187,6 +216,10 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   function shoot(): void {
     if (!myTurn() || !game || !aim) return;
     const g = game;
+    if (g.kind === 'eightball' && g.groups !== null && legalTargets(g).includes('8') && !called.value) {
+      verdict.textContent = 'Call a pocket for the 8 first.';
+      return;
+    }
     const shot = aimedShot(g);
     const cueBall = aim.state.cueBall;
     let played;
@@ -275,6 +308,13 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
 
   const stop = session.onMessage((m) => {
     if (m.type === 'room' && m.room.id === id) {
+      if (busy && room !== null) {
+        // A shot is playing on this page: its end (a frame or the match won, a rematch asked)
+        // shows once its balls have stopped.
+        pendingRoom = m.room;
+        return;
+      }
+      pendingRoom = null;
       room = m.room;
       deadline = m.room.deadline;
       if (!busy && m.room.stateId >= stateId) {
@@ -298,7 +338,9 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   });
   const stopSpace = spaceShoots(shoot);
   const tick = setInterval(() => {
-    clock.textContent = deadline && room?.status === 'playing' ? `${Math.max(0, Math.ceil((deadline - Date.now()) / 1000))} s` : '';
+    // While the last shot's balls still roll the deadline is further off than the clock's length:
+    // the clock shows full until they stop.
+    clock.textContent = deadline && room?.status === 'playing' ? `${Math.max(0, Math.min(room.shotClock, Math.ceil((deadline - Date.now()) / 1000)))} s` : '';
   }, 250);
   session.keep(`room:${id}`, { type: 'watch', room: id });
   return () => {

@@ -17,13 +17,14 @@ export interface Controls {
 
 export function strokeControls(aim: Aim, onShoot: () => void): Controls {
   const power = h('input', { type: 'range', min: MIN_SPEED, max: MAX_SPEED, step: 0.05, value: aim.state.speed, 'aria-label': 'Power (m/s)' });
-  const powerText = h('output', {}, `${aim.state.speed.toFixed(2)} m/s`);
+  // (Outputs are live regions by default; these change with every pointer move, so they are quiet.)
+  const powerText = h('output', { 'aria-live': 'off' }, `${aim.state.speed.toFixed(2)} m/s`);
   power.addEventListener('input', () => {
     aim.state.speed = Number(power.value);
     powerText.textContent = `${aim.state.speed.toFixed(2)} m/s`;
     aim.change();
   });
-  const spin = h('canvas', { width: 72, height: 72, className: 'spin', 'aria-label': 'Spin: click where the tip strikes the ball', role: 'img' });
+  const spin = h('canvas', { width: 72, height: 72, className: 'spin', tabindex: 0, 'aria-label': 'Spin: click where the tip strikes the ball, or use the arrow keys', role: 'img' });
   const drawSpin = () => {
     const ctx = spin.getContext('2d');
     if (!ctx) return;
@@ -41,10 +42,8 @@ export function strokeControls(aim: Aim, onShoot: () => void): Controls {
     ctx.arc(36 + 34 * aim.state.side, 36 - 34 * aim.state.top, 5, 0, 2 * Math.PI);
     ctx.fill();
   };
-  spin.addEventListener('pointerdown', (e) => {
-    const r = spin.getBoundingClientRect();
-    let side = ((e.clientX - r.left) / r.width - 0.5) * 2;
-    let top = -((e.clientY - r.top) / r.height - 0.5) * 2;
+  /** Puts the tip at (side, top), pulled back inside the miscue limit. */
+  const setSpin = (side: number, top: number) => {
     const d = Math.hypot(side, top);
     if (d > MAX_OFFSET) {
       side *= MAX_OFFSET / d;
@@ -54,13 +53,25 @@ export function strokeControls(aim: Aim, onShoot: () => void): Controls {
     aim.state.top = Math.round(top * 100) / 100;
     drawSpin();
     aim.change();
+  };
+  spin.addEventListener('pointerdown', (e) => {
+    const r = spin.getBoundingClientRect();
+    setSpin(((e.clientX - r.left) / r.width - 0.5) * 2, -((e.clientY - r.top) / r.height - 0.5) * 2);
+  });
+  spin.addEventListener('keydown', (e) => {
+    const step: Record<string, [number, number]> = { ArrowLeft: [-0.05, 0], ArrowRight: [0.05, 0], ArrowUp: [0, 0.05], ArrowDown: [0, -0.05] };
+    const d = step[e.key];
+    if (!d) return;
+    e.preventDefault();
+    setSpin(aim.state.side + d[0], aim.state.top + d[1]);
   });
   const shoot = h('button', { type: 'button', className: 'shoot', onclick: () => onShoot() }, 'Shoot');
   // The heading in degrees from the table's long axis, counter-clockwise (as the protocol has it).
-  const aimText = h('output', { 'aria-label': 'Aim' });
+  const aimText = h('output', { 'aria-label': 'Aim', 'aria-live': 'off' });
   const showAim = () => {
     const deg = (aim.state.heading * 180) / Math.PI;
-    aimText.textContent = `${(((deg % 360) + 360) % 360).toFixed(1)}°`;
+    // Hundredths: a fine key step (Shift) turns the cue by about 0.05°.
+    aimText.textContent = `${(((deg % 360) + 360) % 360).toFixed(2)}°`;
   };
   const element = h('div', { className: 'controls' }, h('label', {}, 'Power ', power, ' ', powerText), h('span', {}, 'Aim ', aimText), spin, shoot);
   showAim();

@@ -45,7 +45,7 @@ export class TableView {
     const worldH = this.spec.width + 2 * RAIL;
     // At most 70% of the window's height, and on a short window (a phone on its side) low
     // enough that the controls below it fit on the same screen.
-    const h = Math.min(w * (worldH / worldW), Math.max(150, Math.min(window.innerHeight * 0.7, window.innerHeight - 190)));
+    const h = Math.min(w * (worldH / worldW), Math.max(150, Math.min(window.innerHeight * 0.7, window.innerHeight - 200)));
     const cssW = Math.min(w, h * (worldW / worldH));
     const dpr = window.devicePixelRatio || 1;
     this.canvas.style.width = `${cssW}px`;

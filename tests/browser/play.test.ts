@@ -151,12 +151,12 @@ describe.skipIf(!chromiumAvailable())('the browser client', () => {
         await expect.poll(() => hashOf(b), { timeout: 30_000 }).toBe(placed.outcome.hash);
       }
 
-      // A concedes; both pages say who won.
+      // A concedes; both pages say who won (once the last shot's balls have stopped there).
       await a.getByRole('button', { name: 'Concede' }).click();
       await a.getByRole('button', { name: 'Really concede? Click again' }).click();
       await expect.poll(() => room().status, { timeout: 10_000 }).toBe('over');
       const winner = room().players.find((p) => p.id === room().winner)!.name;
-      await expect.poll(() => b.locator('.verdict').textContent()).toContain(`${winner} wins`);
+      for (const page of [a, b]) await expect.poll(() => page.locator('.verdict').textContent(), { timeout: 30_000 }).toContain(`${winner} wins`);
 
       // Firefox simulated every shot itself and landed on the server's hashes.
       if (firefox) {

@@ -81,7 +81,7 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
     await page.context().close();
   });
 
-  it('after a shot, shows the opponent the whole clock from when the balls stop', async () => {
+  it('after a shot, shows the opponent the whole clock until the balls stop; a spectator has no cue', async () => {
     const a = await player();
     const id = await openTable(a, 30);
     const b = await player();
@@ -92,9 +92,18 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
     await shoot.click();
     // While the break's balls roll, the clock shows more than the 30 s it will count from their stop.
     const clock = b.getByRole('timer', { name: 'Shot clock' });
-    await expect.poll(async () => Number((await clock.textContent())?.replace(' s', '')), { timeout: 5_000 }).toBeGreaterThan(30);
+    // It shows the full 30 s until the balls stop, then counts down.
+    await expect.poll(async () => Number((await clock.textContent())?.replace(' s', '')), { timeout: 5_000 }).toBe(30);
+    await expect.poll(async () => Number((await clock.textContent())?.replace(' s', '')), { timeout: 20_000 }).toBeLessThan(30);
+    // Someone watching the game in play has no cue.
+    const c = await player();
+    await c.goto(`${env.server.url}/room/${id}`);
+    await c.waitForSelector('canvas.table');
+    expect(await c.getByRole('button', { name: 'Shoot' }).isVisible()).toBe(false);
+    expect(await c.getByLabel('Power (m/s)').isVisible()).toBe(false);
     await a.context().close();
     await b.context().close();
+    await c.context().close();
   });
 
   it('ends a conceded match with one sentence, and its replay lists the concession', async () => {
@@ -116,6 +125,9 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
     // (One shot each at most: the match does not count for the ratings, and the page says so.)
     await expect.poll(() => said.textContent(), { timeout: 10_000 }).toMatch(/concedes; .+ wins\. Not rated: each player must take at least two shots\.$/);
     expect((await said.textContent())!.match(/wins/g)).toHaveLength(1);
+    // A rematch asked for by one is shown to the other.
+    await b.getByRole('button', { name: 'Rematch' }).click();
+    await expect.poll(() => a.getByText(/asks for a rematch\.$/).count()).toBe(1);
     const { matches } = (await (await fetch(`${env.server.url}/api/matches?limit=1`)).json()) as { matches: { id: number }[] };
     await a.goto(`${env.server.url}/match/${matches[0]!.id}`);
     const shots = a.getByRole('list', { name: 'Shots' }).getByRole('listitem');
