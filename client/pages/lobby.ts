@@ -38,6 +38,7 @@ export function mountLobby(root: HTMLElement, ctx: PageContext): () => void {
   );
   create.addEventListener('submit', (e) => {
     e.preventDefault();
+    note.textContent = '';
     void session
       .request({
         type: 'create',
@@ -57,6 +58,7 @@ export function mountLobby(root: HTMLElement, ctx: PageContext): () => void {
   const rename = h('form', { className: 'rename', 'aria-label': 'Your name' }, h('label', {}, 'Your name ', name), h('button', { type: 'submit' }, 'Change name'));
   rename.addEventListener('submit', (e) => {
     e.preventDefault();
+    note.textContent = '';
     void session.request({ type: 'rename', name: name.value }).then((m) => {
       note.textContent = m.type === 'error' ? m.message : `You are ${name.value}`;
     });

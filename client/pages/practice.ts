@@ -193,7 +193,10 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
   mode.addEventListener('change', reset);
   layout.addEventListener('change', reset);
   runKind.addEventListener('change', reset);
-  placing.addEventListener('change', () => refresh());
+  placing.addEventListener('change', () => {
+    info.textContent = placing.checked ? 'Drag a ball to move it; untick "Place balls" to play.' : '';
+    refresh();
+  });
   const stopSpace = spaceShoots(shoot);
   reset();
   void ctx;
