@@ -58,15 +58,16 @@ export function drawTable(ctx: CanvasRenderingContext2D, table: TableSpec): void
     ctx.arc(p.x, p.y, p.r * 1.15, 0, 2 * Math.PI);
     ctx.fill();
   }
-  if (table.name !== 'snooker-12ft') drawDiamonds(ctx, L, W);
+  if (table.name !== 'snooker-12ft') drawDiamonds(ctx, L, W, table.pockets.length > 0);
   else drawSnookerMarks(ctx, table);
 }
 
-function drawDiamonds(ctx: CanvasRenderingContext2D, L: number, W: number): void {
+/** Sights at eighths of the long rails and quarters of the short ones; a pool table's side pockets take the middle ones' place. */
+function drawDiamonds(ctx: CanvasRenderingContext2D, L: number, W: number, pockets: boolean): void {
   ctx.fillStyle = '#efe6cf';
   const d = RAIL / 2;
   for (let i = 1; i < 8; i++) {
-    if (i === 4) continue;
+    if (i === 4 && pockets) continue;
     const x = -L + (i * L) / 4;
     dot(ctx, x, W + d, 0.008);
     dot(ctx, x, -W - d, 0.008);
