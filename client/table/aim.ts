@@ -129,6 +129,21 @@ export class Aim {
   private key(e: KeyboardEvent): void {
     if (!this.active) return;
     const fine = e.shiftKey ? 0.1 : 1;
+    const move: Record<string, [number, number]> = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1] };
+    if (e.altKey && move[e.key]) {
+      // Alt + arrows move a ball in hand, 1 cm a press (1 mm with Shift), to legal places only.
+      e.preventDefault();
+      const cue = this.cuePosition();
+      const area = this.game?.ballInHand;
+      if (!cue || !this.active || !this.game || area === undefined || area === false) return;
+      const [dx, dy] = move[e.key]!;
+      const to = { x: cue.x + dx * 0.01 * fine, y: cue.y + dy * 0.01 * fine };
+      if (placementProblem(this.view.spec, this.game.balls, this.cueId, to, area) === null) {
+        this.state.cueBall = to;
+        this.change();
+      }
+      return;
+    }
     if (e.key === 'ArrowLeft') this.state.heading += 0.008 * fine;
     else if (e.key === 'ArrowRight') this.state.heading -= 0.008 * fine;
     else if (e.key === 'ArrowUp') this.state.speed = Math.min(MAX_SPEED, this.state.speed + 0.25 * fine);

@@ -3,8 +3,10 @@
 // clock counts from when the balls stop; a conceded match says so once, and its replay lists it.
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
+import { ProtocolClient } from '../../bots/client.ts';
 import { tableSpec } from '../../shared/physics/index.ts';
-import { newGame } from '../../shared/rules/index.ts';
+import type { ServerMessage } from '../../shared/protocol/index.ts';
+import { cueBallId, newGame } from '../../shared/rules/index.ts';
 import { chromiumAvailable, serverAndChromium } from '../support/browser.ts';
 
 describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
@@ -190,5 +192,44 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
     await expect.poll(() => page.locator('.verdict').textContent()).toBe('The cue ball cannot go there: it must lie on the cloth, clear of the other balls.');
     expect(await pixel(open)).toEqual(cloth);
     await page.context().close();
+  });
+
+  it('places a ball in hand from the keyboard: Alt and the arrows, 1 cm a press', async () => {
+    const a = await player();
+    const id = await openTable(a);
+    const b = await player();
+    await b.goto(`${env.server.url}/room/${id}`);
+    await b.getByRole('button', { name: 'Join' }).click();
+    const watcher = await ProtocolClient.connect(`${env.server.url.replace('http', 'ws')}/ws`);
+    await watcher.request({ type: 'hello', name: 'Watch-keys' });
+    const shots: Extract<ServerMessage, { type: 'shot' }>[] = [];
+    watcher.onMessage((m) => m.type === 'shot' && shots.push(m));
+    await watcher.request({ type: 'watch', room: id });
+    // The breaker strokes away from the rack as softly as the keys allow: a foul, ball in hand.
+    const shootA = a.getByRole('button', { name: 'Shoot' });
+    await expect.poll(() => shootA.isEnabled(), { timeout: 10_000 }).toBe(true);
+    const canvasA = a.locator('canvas.table');
+    await canvasA.focus();
+    for (let i = 0; i < 12; i++) await canvasA.press('ArrowDown');
+    for (let i = 0; i < 390; i++) await canvasA.press('ArrowLeft');
+    await canvasA.press('Space');
+    await expect.poll(() => shots.length, { timeout: 10_000 }).toBe(1);
+    const g = shots[0]!.game;
+    expect(g.ballInHand).toBe('anywhere');
+    const cue = g.balls.find((x) => x.id === cueBallId(g))!;
+    const shootB = b.getByRole('button', { name: 'Shoot' });
+    await expect.poll(() => shootB.isEnabled(), { timeout: 30_000 }).toBe(true);
+    const canvasB = b.locator('canvas.table');
+    await canvasB.focus();
+    for (let i = 0; i < 5; i++) await canvasB.press('Alt+ArrowUp');
+    await canvasB.press('Alt+Shift+ArrowRight');
+    await shootB.click();
+    await expect.poll(() => shots.length, { timeout: 10_000 }).toBe(2);
+    const placed = shots[1]!.cueBall!;
+    expect(placed.x).toBeCloseTo(cue.x + 0.001, 6);
+    expect(placed.y).toBeCloseTo(cue.y + 0.05, 6);
+    await watcher.close();
+    await a.context().close();
+    await b.context().close();
   });
 });
