@@ -179,10 +179,18 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     ...POCKETS.map((p) => h('option', { value: p }, POCKET_NAMES[p] ?? p)),
   );
   const nominated = h('select', { 'aria-label': 'Nominated ball' });
+  /** The shot count the declarations were made for: a new stroke starts with none. */
+  let declaredAt = -1;
   const renderDeclarations = () => {
     declarations.replaceChildren();
     const g = game;
     if (!g || !myTurn()) return;
+    if (g.shots !== declaredAt) {
+      declaredAt = g.shots;
+      called.value = '';
+      nominated.value = '';
+      pushOut.checked = false;
+    }
     if (g.kind === 'nineball' && g.phase === 'push-out') declarations.append(h('label', {}, pushOut, ' Push-out'));
     if (g.kind === 'eightball' && g.groups !== null && legalTargets(g).includes('8')) declarations.append(h('label', {}, 'Called pocket for the 8 ', called));
     if (g.kind === 'snooker' && (g.on === 'colour' || g.freeBall)) {
