@@ -193,13 +193,14 @@ export function openingRun(s: TrackedShot, strike: Strike, table: TableSpec): { 
   const until = firstContactTime(s);
   if (!Number.isFinite(until)) return null;
   const alone = fitStrike(s, table, strike, 150, until);
+  const scene = sceneOf(s);
   const speedAtContact = (st: Strike): number => {
-    const out = simulateShot(s, sceneOf(s), st, table);
+    const out = simulateShot(s, scene, st, table);
     const contact = out?.events.find((e) => e.kind === 'ball');
     if (!out || !contact) return NaN;
     const cue = sampleOutcome(out, contact.t - 1e-9, table).find((q) => q.id === 'white')!;
     return Math.hypot(cue.vx, cue.vy);
   };
   const ratio = speedAtContact(alone.strike) / speedAtContact(strike);
-  return Number.isFinite(ratio) ? { whole: openingError(s, sceneOf(s), strike, table, until), alone: alone.rms, speedRatio: ratio } : null;
+  return Number.isFinite(ratio) ? { whole: openingError(s, scene, strike, table, until), alone: alone.rms, speedRatio: ratio } : null;
 }

@@ -45,8 +45,6 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   let deadline: number | undefined;
   /** When "Concede" was clicked once (ms since the epoch). */
   let concedeArmedAt = -Infinity;
-  /** Shots wait while the connection is down: the server could not take them. */
-  let online = session.status !== 'reconnecting';
 
   const title = h('h2', {}, 'Room');
   const players = h('ol', { className: 'players', 'aria-label': 'Players' });
@@ -68,7 +66,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
 
   const me = () => session.player?.id;
   const seated = () => !!room?.players.some((p) => p.id === me());
-  const myTurn = () => !!game && room?.status === 'playing' && game.winner === null && game.turn === me() && seated() && !busy && online;
+  const myTurn = () => !!game && room?.status === 'playing' && game.winner === null && game.turn === me() && seated() && !busy && session.status !== 'reconnecting'; // (the server could not take a shot meanwhile)
   const nameOf = (pid: string) => room?.players.find((p) => p.id === pid)?.name ?? pid;
   const words = (text: string) => inWords(text, (pid) => (room?.players.some((p) => p.id === pid) ? nameOf(pid) : undefined));
 
@@ -341,7 +339,6 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   });
   const stopStatus = session.onStatus((s) => {
     banner.textContent = s === 'reconnecting' ? 'Connection lost: reconnecting…' : '';
-    online = s !== 'reconnecting';
     render();
   });
   const stopSpace = spaceShoots(shoot);

@@ -107,12 +107,8 @@ export class Aim {
   private pointerMove(e: PointerEvent): void {
     if (!this.active) return;
     const w = this.view.toWorld(e.clientX, e.clientY);
-    if (this.dragging && this.game && this.game.ballInHand !== false) {
-      // Only legal places: inside the area, on the bed, clear of the other balls.
-      if (placementProblem(this.view.spec, this.game.balls, this.cueId, w, this.game.ballInHand) === null) {
-        this.state.cueBall = w;
-        this.change();
-      }
+    if (this.dragging) {
+      this.placeAt(w);
       return;
     }
     // A mouse aims by hovering until a click holds the aim; pressing and dragging always aims.
@@ -126,6 +122,16 @@ export class Aim {
     this.change();
   }
 
+  /** Moves a ball in hand to `to` if that is a legal place: inside the area, on the bed, clear of the other balls. */
+  private placeAt(to: { x: number; y: number }): void {
+    const area = this.game?.ballInHand;
+    if (!this.game || area === undefined || area === false) return;
+    if (placementProblem(this.view.spec, this.game.balls, this.cueId, to, area) === null) {
+      this.state.cueBall = to;
+      this.change();
+    }
+  }
+
   private key(e: KeyboardEvent): void {
     if (!this.active) return;
     const fine = e.shiftKey ? 0.1 : 1;
@@ -134,14 +140,8 @@ export class Aim {
       // Alt + arrows move a ball in hand, 1 cm a press (1 mm with Shift), to legal places only.
       e.preventDefault();
       const cue = this.cuePosition();
-      const area = this.game?.ballInHand;
-      if (!cue || !this.active || !this.game || area === undefined || area === false) return;
       const [dx, dy] = move[e.key]!;
-      const to = { x: cue.x + dx * 0.01 * fine, y: cue.y + dy * 0.01 * fine };
-      if (placementProblem(this.view.spec, this.game.balls, this.cueId, to, area) === null) {
-        this.state.cueBall = to;
-        this.change();
-      }
+      if (cue) this.placeAt({ x: cue.x + dx * 0.01 * fine, y: cue.y + dy * 0.01 * fine });
       return;
     }
     if (e.key === 'ArrowLeft') this.state.heading += 0.008 * fine;

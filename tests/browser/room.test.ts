@@ -27,6 +27,16 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
     return page.url().split('/').at(-1)!;
   }
 
+  /** A table opened by one player (a, who breaks) and joined by another (b) through its link. */
+  async function twoPlayers(shotClock = 0): Promise<{ a: Page; b: Page; id: string }> {
+    const a = await player();
+    const id = await openTable(a, shotClock);
+    const b = await player();
+    await b.goto(`${env.server.url}/room/${id}`);
+    await b.getByRole('button', { name: 'Join' }).click();
+    return { a, b, id };
+  }
+
   it('shows a waiting table\'s invite link, and its player can close it', async () => {
     const a = await player();
     const id = await openTable(a);
@@ -84,11 +94,7 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
   });
 
   it('after a shot, shows the opponent the whole clock until the balls stop; a spectator has no cue', async () => {
-    const a = await player();
-    const id = await openTable(a, 30);
-    const b = await player();
-    await b.goto(`${env.server.url}/room/${id}`);
-    await b.getByRole('button', { name: 'Join' }).click();
+    const { a, b, id } = await twoPlayers(30);
     const shoot = a.getByRole('button', { name: 'Shoot' });
     await expect.poll(() => shoot.isEnabled(), { timeout: 10_000 }).toBe(true);
     await shoot.click();
@@ -109,11 +115,7 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
   });
 
   it('ends a conceded match with one sentence, and its replay lists the concession', async () => {
-    const a = await player();
-    const id = await openTable(a);
-    const b = await player();
-    await b.goto(`${env.server.url}/room/${id}`);
-    await b.getByRole('button', { name: 'Join' }).click();
+    const { a, b, id } = await twoPlayers();
     const shoot = a.getByRole('button', { name: 'Shoot' });
     await expect.poll(() => shoot.isEnabled(), { timeout: 10_000 }).toBe(true);
     await shoot.click();
@@ -195,11 +197,7 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
   });
 
   it('places a ball in hand from the keyboard: Alt and the arrows, 1 cm a press', async () => {
-    const a = await player();
-    const id = await openTable(a);
-    const b = await player();
-    await b.goto(`${env.server.url}/room/${id}`);
-    await b.getByRole('button', { name: 'Join' }).click();
+    const { a, b, id } = await twoPlayers();
     const watcher = await ProtocolClient.connect(`${env.server.url.replace('http', 'ws')}/ws`);
     await watcher.request({ type: 'hello', name: 'Watch-keys' });
     const shots: Extract<ServerMessage, { type: 'shot' }>[] = [];
