@@ -44,6 +44,8 @@ export class GameService {
   private readonly seatsOf = new Map<string, Set<string>>();
   /** Rooms each socket watches. */
   private readonly watching = new Map<ConnId, Set<string>>();
+  /** The network address each open socket came from (for limits per address). */
+  private readonly addresses = new Map<ConnId, string>();
   private out: Delivery[] = [];
   private lobbyChanged = false;
 
@@ -60,6 +62,16 @@ export class GameService {
   /** Rooms brought back from the store or made since, not closed. */
   get roomCount(): number {
     return this.lobby.rooms.size;
+  }
+
+  /** A socket opened from `address` (its remote IP); the service is told before any of its frames. */
+  open(conn: ConnId, address: string): void {
+    this.addresses.set(conn, address);
+  }
+
+  /** The address a socket came from ('' when never told). */
+  private addressOf(conn: ConnId): string {
+    return this.addresses.get(conn) ?? '';
   }
 
   handle(conn: ConnId, msg: ClientMessage): Delivery[] {
@@ -87,6 +99,7 @@ export class GameService {
       }
     }
     this.watching.delete(conn);
+    this.addresses.delete(conn);
     const gone = this.lobby.detach(conn, this.now());
     if (gone) {
       for (const room of this.roomsOf(gone.id)) this.broadcastRoom(room);

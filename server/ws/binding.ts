@@ -41,8 +41,9 @@ export function bindWebSocket(wss: WebSocketServer, service: GameService, option
     }
   };
 
-  wss.on('connection', (socket) => {
+  wss.on('connection', (socket, req) => {
     const id = nextId++;
+    service.open(id, req.socket.remoteAddress ?? '');
     const conn: Conn = { socket, bucket: new TokenBucket(RATE_PER_SECOND, RATE_BURST, Date.now()), missedPings: 0 };
     conns.set(id, conn);
     socket.on('pong', () => {

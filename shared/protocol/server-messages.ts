@@ -103,6 +103,11 @@ export type ErrorCode =
   | 'not-your-turn'
   | 'too-many-rooms'
   | 'not-claimable'
+  // Limits (issue 36): too many of something from one player or address, or too fast.
+  | 'rate-limited'
+  | 'too-many-guests'
+  | 'too-many-tabs'
+  | 'bad-name'
   | 'bad-shot'
   | 'miscue'
   | 'internal'

@@ -13,6 +13,8 @@ export interface Harness {
   readonly dbPath: string;
   /** Milliseconds since the epoch as the service sees them. */
   clock: number;
+  /** A connection opens from an address (connections never opened count as address ''). */
+  open(conn: ConnId, address: string): void;
   /** Sends a parsed message from a connection; returns what each connection got. */
   send(conn: ConnId, msg: ClientMessage): Map<ConnId, ServerMessage[]>;
   /** Sends a raw frame through the parser first, as the WebSocket binding does. */
@@ -47,6 +49,7 @@ export function openHarness(options: { seatHoldMs?: number; dbPath?: string } = 
     service: undefined as unknown as GameService,
     store,
     dbPath,
+    open: (conn, address) => h.service.open(conn, address),
     send: (conn, msg) => record(h.service.handle(conn, msg)),
     sendText: (conn, text) => {
       const p = parseClientMessage(text);
