@@ -10,7 +10,7 @@ export function mountLobby(root: HTMLElement, ctx: PageContext): () => void {
   const note = h('p', { role: 'status', className: 'note' });
   const kind = h('select', { name: 'kind', 'aria-label': 'Game' }, ...Object.entries(KIND_NAMES).map(([v, t]) => h('option', { value: v }, t)));
   const race = h('input', { name: 'raceTo', type: 'number', min: 1, max: 50, value: 1, 'aria-label': 'Race to' });
-  const clock = h('input', { name: 'shotClock', type: 'number', min: 0, max: 600, value: 0, 'aria-label': 'Shot clock (s)' });
+  const clock = h('input', { name: 'shotClock', type: 'number', min: 0, max: 600, value: 0, title: '0 for no clock, or 10 to 600 seconds', 'aria-label': 'Shot clock (s)' });
   const priv = h('input', { name: 'private', type: 'checkbox', 'aria-label': 'Private' });
   const guidance = h(
     'select',

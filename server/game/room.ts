@@ -1,6 +1,6 @@
 // A room: its plain state (persisted as JSON after every change) and the pure steps of its match:
 // starting a game, moving on after a move (snooker frames, the end of the match), the view sent out.
-import type { GameKindName, PlayerRef, RoomView } from '../../shared/protocol/index.ts';
+import { SHOT_CLOCK_MIN_S, type GameKindName, type PlayerRef, type RoomView } from '../../shared/protocol/index.ts';
 import { newGame, tallyStep, type Game, type Tally } from '../../shared/rules/index.ts';
 import type { ConnId } from './lobby.ts';
 
@@ -58,9 +58,12 @@ export function gameFor(state: RoomState, frame: number): Game {
   return newGame('snooker', players, { seed: state.seed + frame });
 }
 
-/** The shot clock's end after a change that leaves a game in play, the clock starting at `from`. */
+/**
+ * The shot clock's end after a change that leaves a game in play, the clock starting at `from`. A
+ * room stored before clocks under SHOT_CLOCK_MIN_S were refused gets the minimum, not a foul a tick.
+ */
 export function deadlineAfter(state: RoomState, from: number): number | null {
-  return state.status === 'playing' && state.shotClock > 0 ? from + state.shotClock * 1000 : null;
+  return state.status === 'playing' && state.shotClock > 0 ? from + Math.max(state.shotClock, SHOT_CLOCK_MIN_S) * 1000 : null;
 }
 
 /**

@@ -2,7 +2,7 @@
 // frame with these and the browser client builds its messages to them, so both share one definition.
 // Unknown extra fields are dropped; numbers must be finite; strings and arrays are bounded.
 import * as v from 'valibot';
-import { CHAT_MAX, NAME_MAX, RACE_MAX, SHOT_CLOCK_MAX_S } from './limits.ts';
+import { CHAT_MAX, NAME_MAX, RACE_MAX, SHOT_CLOCK_MAX_S, SHOT_CLOCK_MIN_S } from './limits.ts';
 
 /** A request id, echoed as `re` by the reply or error it causes. */
 const RequestId = v.optional(v.union([v.pipe(v.string(), v.maxLength(64)), v.pipe(v.number(), v.finite())]));
@@ -55,7 +55,13 @@ export const CreateSchema = v.object({
   kind: GameKindSchema,
   raceTo: v.optional(v.pipe(v.number(), v.integer(), v.minValue(1), v.maxValue(RACE_MAX))),
   private: v.optional(v.boolean()),
-  shotClock: v.optional(v.pipe(v.number(), v.finite(), v.minValue(0), v.maxValue(SHOT_CLOCK_MAX_S))),
+  shotClock: v.optional(
+    v.pipe(
+      v.number(),
+      v.finite(),
+      v.check((s) => s === 0 || (s >= SHOT_CLOCK_MIN_S && s <= SHOT_CLOCK_MAX_S), `must be 0 (no clock) or from ${SHOT_CLOCK_MIN_S} to ${SHOT_CLOCK_MAX_S} seconds`),
+    ),
+  ),
   /** How much the players' pages may show of a shot before it is played (default 'contact'). */
   guidance: v.optional(v.picklist(GUIDANCE)),
 });

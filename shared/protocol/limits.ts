@@ -8,6 +8,8 @@ export const NAME_MAX = 32;
 export const CHAT_MAX = 200;
 /** Longest shot clock a room may set (s); 0 is no clock. */
 export const SHOT_CLOCK_MAX_S = 600;
+/** Shortest shot clock (s): a clock must leave time to aim, and a shorter one fouls on every tick. */
+export const SHOT_CLOCK_MIN_S = 10;
 /** Largest race a room may set (racks, frames or points). */
 export const RACE_MAX = 50;
 /** Open rooms (waiting or playing) one player may have created at once. */

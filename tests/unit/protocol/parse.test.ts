@@ -2,7 +2,7 @@
 // input out of the game service (bad JSON, wrong types, infinities, out-of-range numbers, markup
 // is text but control characters are not, oversized text).
 import { describe, expect, it } from 'vitest';
-import { CHAT_MAX, NAME_MAX, parseClientMessage } from '../../../shared/protocol/index.ts';
+import { CHAT_MAX, NAME_MAX, parseClientMessage, SHOT_CLOCK_MAX_S } from '../../../shared/protocol/index.ts';
 
 const ok = (m: object) => parseClientMessage(JSON.stringify(m));
 const shot = { ball: 'cue', heading: 1.2, speed: 3, side: 0.1, top: -0.2 };
@@ -60,6 +60,13 @@ describe('parseClientMessage', () => {
       ok: false,
       message: expect.stringContaining('shot.heading'),
     });
+  });
+
+  it('takes a shot clock of 0 (none) or 10 to 600 s, and names shotClock when refusing any other', () => {
+    for (const shotClock of [0, 10, 45.5, SHOT_CLOCK_MAX_S]) expect(ok({ type: 'create', kind: 'nineball', shotClock }).ok, String(shotClock)).toBe(true);
+    for (const shotClock of [0.001, 1, 9.99, -1, SHOT_CLOCK_MAX_S + 1]) {
+      expect(ok({ type: 'create', kind: 'snooker', shotClock }), String(shotClock)).toMatchObject({ ok: false, code: 'bad-message', message: expect.stringMatching(/^shotClock: must be 0 \(no clock\) or from 10 to 600 seconds/) });
+    }
   });
 
   it('keeps names and chat as plain text: markup is text, trimmed, unchanged', () => {

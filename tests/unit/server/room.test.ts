@@ -1,7 +1,7 @@
 // The room's match steps as pure functions: snooker's race of frames with the break alternating,
 // the end of a match, the shot clock's deadline.
 import { describe, expect, it } from 'vitest';
-import { afterMove, gameFor, OVER_KEEP_MS, type RoomState } from '../../../server/game/room.ts';
+import { afterMove, deadlineAfter, gameFor, OVER_KEEP_MS, type RoomState } from '../../../server/game/room.ts';
 import { concede, EMPTY_TALLY } from '../../../shared/rules/index.ts';
 
 const base: RoomState = {
@@ -34,5 +34,11 @@ describe('a room\'s match', () => {
     const p0 = { ...pool, game: gameFor(pool, 0) };
     expect(p0.game.kind === 'nineball' && p0.game.raceTo).toBe(3);
     expect(afterMove(p0, concede(p0.game, 'b'), 'concession', 5)).toMatchObject({ status: 'over', winner: 'a', frames: null });
+  });
+
+  it('gives a room stored with a clock under 10 s the 10 s minimum, so the clock cannot foul every tick', () => {
+    expect(deadlineAfter({ ...base, shotClock: 0.001 }, 1000)).toBe(11_000);
+    expect(deadlineAfter({ ...base, shotClock: 30 }, 1000)).toBe(31_000);
+    expect(deadlineAfter({ ...base, shotClock: 0 }, 1000)).toBeNull();
   });
 });
