@@ -4,6 +4,7 @@ import type { AddressInfo } from 'node:net';
 import { WebSocketServer } from 'ws';
 import type { Config } from './config.ts';
 import { openDatabase } from './database.ts';
+import { healthCheck } from './health.ts';
 import { createRequestHandler } from './http-routes.ts';
 import { schemaVersion } from './migrate.ts';
 import { loadStaticFiles } from './static-files.ts';
@@ -31,6 +32,9 @@ export class PortInUseError extends Error {
   }
 }
 
+/** How long the health check waits for a database lock held elsewhere (ms): short, it runs on the event loop. */
+const HEALTH_LOCK_WAIT_MS = 100;
+
 /** Largest WebSocket message accepted, in bytes: anything larger closes the connection (1009). */
 export const MAX_MESSAGE_BYTES = MAX_FRAME_BYTES;
 
@@ -45,7 +49,8 @@ export async function startServer(config: Config): Promise<RunningServer> {
     throw err;
   }
   const files = loadStaticFiles(config.clientDir);
-  const http = createServer(createRequestHandler(files, () => ({ ok: db.open, version: VERSION, schema: schemaVersion(db) }), new Api(store)));
+  const health = healthCheck({ version: VERSION, schema: () => schemaVersion(db), probeWrite: () => store.probeWrite(HEALTH_LOCK_WAIT_MS) });
+  const http = createServer(createRequestHandler(files, health, new Api(store)));
   try {
     await new Promise<void>((resolve, reject) => {
       const onError = (err: NodeJS.ErrnoException) => {

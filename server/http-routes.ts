@@ -11,6 +11,8 @@ export interface Health {
   readonly ok: boolean;
   readonly version: string;
   readonly schema: number;
+  /** Why it is not ok. */
+  readonly error?: string;
 }
 
 export function createRequestHandler(files: ReadonlyMap<string, StaticFile>, health: () => Health, api?: Api) {

@@ -334,4 +334,18 @@ export class Store {
   resultCount(): number {
     return this.s.resultCount.get()!.n;
   }
+
+  /**
+   * A real write (one row rewritten and committed), so that a full disk, a read-only file or a lock
+   * held elsewhere shows; waits at most `waitMs` for a lock. Throws what SQLite says.
+   */
+  probeWrite(waitMs: number): void {
+    const busy = this.db.pragma('busy_timeout', { simple: true }) as number;
+    this.db.pragma(`busy_timeout = ${Math.max(0, Math.floor(waitMs))}`);
+    try {
+      this.db.prepare('INSERT INTO health (id, checked_at) VALUES (1, ?) ON CONFLICT (id) DO UPDATE SET checked_at = excluded.checked_at').run(this.now());
+    } finally {
+      this.db.pragma(`busy_timeout = ${busy}`);
+    }
+  }
 }
