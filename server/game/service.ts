@@ -305,7 +305,7 @@ export class GameService {
 
   /**
    * A name asked for, normalised: refused when blank-looking or too long once normalised, or when
-   * it looks like another player's name (case, accents and lookalike letters aside).
+   * it looks like another player's name (the same in another case, or with lookalike letters).
    */
   private freeName(raw: string, self = 0): string {
     const name = normalizeName(raw);
