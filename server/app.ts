@@ -41,9 +41,11 @@ export const MAX_MESSAGE_BYTES = MAX_FRAME_BYTES;
 export async function startServer(config: Config): Promise<RunningServer> {
   const { db, applied } = openDatabase(config.dbPath, config.migrationsDir);
   let service: GameService;
-  const store = new Store(db);
+  let store: Store;
   try {
-    service = new GameService(store, { seatHoldMs: config.seatHoldMs });
+    // The store gives players from before migration 005 their name keys as it opens.
+    store = new Store(db);
+    service = new GameService(store, { seatHoldMs: config.seatHoldMs, guestsPerAddress: config.guestsPerAddress, guestKeepMs: config.guestKeepMs });
   } catch (err) {
     db.close();
     throw err;

@@ -14,6 +14,10 @@ export interface Config {
   readonly seatHoldMs: number;
   /** Interval between pings of each socket (ms). */
   readonly pingMs: number;
+  /** New players (guests) one address may make an hour. */
+  readonly guestsPerAddress: number;
+  /** How long a player who never played is kept after they were last seen (ms). */
+  readonly guestKeepMs: number;
 }
 
 function seconds(env: NodeJS.ProcessEnv, name: string, fallback: number): number {
@@ -24,6 +28,17 @@ function seconds(env: NodeJS.ProcessEnv, name: string, fallback: number): number
     throw new RangeError(`${name} must be a number of seconds above 0 and at most 86400, got "${text}"`);
   }
   return value * 1000;
+}
+
+/** A whole number from 1 to `max`. */
+function count(env: NodeJS.ProcessEnv, name: string, fallback: number, max: number, unit: string): number {
+  const text = env[name];
+  if (text === undefined) return fallback;
+  const value = Number(text);
+  if (!/^\d+$/.test(text.trim()) || value < 1 || value > max) {
+    throw new RangeError(`${name} must be a whole number of ${unit} from 1 to ${max}, got "${text}"`);
+  }
+  return value;
 }
 
 export function readConfig(env: NodeJS.ProcessEnv = process.env): Config {
@@ -42,5 +57,7 @@ export function readConfig(env: NodeJS.ProcessEnv = process.env): Config {
     clientDir: resolve(env.BAIZE_CLIENT_DIR ?? resolve(ROOT, 'dist/client')),
     seatHoldMs: seconds(env, 'BAIZE_SEAT_HOLD_S', 60),
     pingMs: seconds(env, 'BAIZE_PING_S', 15),
+    guestsPerAddress: count(env, 'BAIZE_GUESTS_PER_ADDRESS', 20, 1_000_000_000, 'new players an hour'),
+    guestKeepMs: count(env, 'BAIZE_GUEST_KEEP_DAYS', 30, 36_500, 'days') * 86_400_000,
   };
 }

@@ -1,12 +1,23 @@
 // Every SQL statement of the server: players, rooms, matches with their action logs, results.
 // Each write that belongs together is one transaction, so a crash leaves either all of it or none.
 import type { Database } from 'better-sqlite3';
+import { nameKeys } from './players/names.ts';
 import { NEW_RATING, rateMatch, type Rating } from './ratings/glicko2.ts';
 
 export interface PlayerRow {
   readonly id: number;
   readonly name: string;
 }
+
+/** Players a pass of the pruner looked at: those it may delete, and where the next batch starts. */
+export interface IdlePage {
+  readonly idle: number[];
+  /** The id after which the next batch starts; undefined when the pass is done. */
+  readonly next: number | undefined;
+}
+
+/** What makes a key of a name taken before this release unique (see fillNameKeys). */
+const LEGACY_KEY = '\u0001';
 
 export interface RoomRow {
   readonly id: string;
@@ -118,11 +129,31 @@ export class Store {
     private readonly now: () => number = Date.now,
   ) {
     this.s = {
-      playerByToken: db.prepare<[Buffer], PlayerRow>('SELECT id, name FROM players WHERE token_hash = ?'),
+      playerByToken: db.prepare<[Buffer], PlayerRow & { lastSeen: number | null }>('SELECT id, name, last_seen AS lastSeen FROM players WHERE token_hash = ?'),
       playerById: db.prepare<[number], PlayerRow>('SELECT id, name FROM players WHERE id = ?'),
-      nameTaken: db.prepare<[string], { one: number }>('SELECT 1 AS one FROM players WHERE name = ? COLLATE NOCASE'),
-      insertPlayer: db.prepare<[string, Buffer, number]>('INSERT INTO players (name, token_hash, created_at) VALUES (?, ?, ?)'),
-      renamePlayer: db.prepare<[string, number]>('UPDATE players SET name = ? WHERE id = ?'),
+      nameOwner: db.prepare<[string, string, number], { id: number }>('SELECT id FROM players WHERE (name_key_lower = ? OR name_key_upper = ?) AND id <> ? LIMIT 1'),
+      insertPlayer: db.prepare<[string, string, string, Buffer, number, number]>(
+        'INSERT INTO players (name, name_key_lower, name_key_upper, token_hash, created_at, last_seen) VALUES (?, ?, ?, ?, ?, ?)',
+      ),
+      renamePlayer: db.prepare<[string, string, string, number]>('UPDATE players SET name = ?, name_key_lower = ?, name_key_upper = ? WHERE id = ?'),
+      touchPlayer: db.prepare<[number, number]>('UPDATE players SET last_seen = ? WHERE id = ?'),
+      keyless: db.prepare<[], PlayerRow>('SELECT id, name FROM players WHERE name_key_lower IS NULL OR name_key_upper IS NULL ORDER BY id'),
+      keyLowerUsed: db.prepare<[string], { id: number }>('SELECT id FROM players WHERE name_key_lower = ?'),
+      keyUpperUsed: db.prepare<[string], { id: number }>('SELECT id FROM players WHERE name_key_upper = ?'),
+      setKeys: db.prepare<[string, string, number]>('UPDATE players SET name_key_lower = ?, name_key_upper = ? WHERE id = ?'),
+      // A page of players by id, each marked idle when not seen since the cutoff and referred to by
+      // no row anywhere; every subquery walks an index on the referring column.
+      idlePage: db.prepare<[number, number, number], { id: number; idle: number }>(
+        `SELECT p.id, (coalesce(p.last_seen, p.created_at) < ?
+           AND NOT EXISTS (SELECT 1 FROM matches WHERE player1 = p.id)
+           AND NOT EXISTS (SELECT 1 FROM matches WHERE player2 = p.id)
+           AND NOT EXISTS (SELECT 1 FROM rooms WHERE created_by = p.id)
+           AND NOT EXISTS (SELECT 1 FROM ratings WHERE player_id = p.id)
+           AND NOT EXISTS (SELECT 1 FROM records WHERE player_id = p.id)
+           AND NOT EXISTS (SELECT 1 FROM practice_runs WHERE player_id = p.id)) AS idle
+         FROM players p WHERE p.id > ? ORDER BY p.id LIMIT ?`,
+      ),
+      deletePlayer: db.prepare<[number]>('DELETE FROM players WHERE id = ?'),
       insertRoom: db.prepare<[string, string, number, number, number, number, number, string, string, number]>(
         'INSERT INTO rooms (id, kind, race_to, private, shot_clock, created_by, created_at, status, state, updated_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)',
       ),
@@ -192,9 +223,11 @@ export class Store {
         'INSERT INTO practice_runs (player_id, kind, seed, shots, score, created_at) VALUES (?, ?, ?, ?, ?, ?)',
       ),
     };
+    this.fillNameKeys();
   }
 
-  playerByTokenHash(hash: Buffer): PlayerRow | undefined {
+  /** The player with this token, and when they were last seen (null before it was recorded). */
+  playerByTokenHash(hash: Buffer): (PlayerRow & { lastSeen: number | null }) | undefined {
     return this.s.playerByToken.get(hash);
   }
 
@@ -202,19 +235,78 @@ export class Store {
     return this.s.playerById.get(id);
   }
 
-  nameTaken(name: string): boolean {
-    return this.s.nameTaken.get(name) !== undefined;
+  /** The id of another player whose name looks like this one (the same lower or upper key), if any. */
+  nameOwner(name: string, exceptId = 0): number | undefined {
+    const keys = nameKeys(name);
+    return this.s.nameOwner.get(keys.lower, keys.upper, exceptId)?.id;
   }
 
-  /** A new player; throws on a name taken meanwhile (the UNIQUE constraint). */
+  /** A new player; throws on a name taken meanwhile (the UNIQUE constraints). */
   createPlayer(name: string, tokenHash: Buffer): PlayerRow {
-    const info = this.s.insertPlayer.run(name, tokenHash, this.now());
+    const keys = nameKeys(name);
+    const now = this.now();
+    const info = this.s.insertPlayer.run(name, keys.lower, keys.upper, tokenHash, now, now);
     return { id: Number(info.lastInsertRowid), name };
   }
 
-  /** A player's new name; throws on a name taken meanwhile (the UNIQUE constraint). */
+  /** A player's new name; throws on a name taken meanwhile (the UNIQUE constraints). */
   renamePlayer(id: number, name: string): void {
-    this.s.renamePlayer.run(name, id);
+    const keys = nameKeys(name);
+    this.s.renamePlayer.run(name, keys.lower, keys.upper, id);
+  }
+
+  /** Records that a player was here now. */
+  touchPlayer(id: number): void {
+    this.s.touchPlayer.run(this.now(), id);
+  }
+
+  /**
+   * Gives players from before the name keys theirs, oldest first, in one transaction. Names taken
+   * then were unique only without regard to ASCII case, so two may share a key now: the older
+   * player keeps the plain key, a later one gets "\u0001" and its id instead, which no real name's
+   * key can equal (names never hold control characters) and which stays unique. That player keeps
+   * their name; a lookalike of it stays taken by the older one.
+   */
+  fillNameKeys(): number {
+    return this.db.transaction(() => {
+      const rows = this.s.keyless.all();
+      for (const row of rows) {
+        const keys = nameKeys(row.name);
+        const lowerUsed = this.s.keyLowerUsed.get(keys.lower);
+        const upperUsed = this.s.keyUpperUsed.get(keys.upper);
+        const lower = lowerUsed && lowerUsed.id !== row.id ? `${LEGACY_KEY}${row.id}` : keys.lower;
+        const upper = upperUsed && upperUsed.id !== row.id ? `${LEGACY_KEY}${row.id}` : keys.upper;
+        this.s.setKeys.run(lower, upper, row.id);
+      }
+      return rows.length;
+    })();
+  }
+
+  /**
+   * Up to `limit` players with ids above `after`, and which of them may be deleted: not seen since
+   * `cutoff` and referred to by nothing (no match, room, rating, record or practice run).
+   */
+  idlePlayers(after: number, cutoff: number, limit: number): IdlePage {
+    const rows = this.s.idlePage.all(cutoff, after, limit);
+    return { idle: rows.filter((r) => r.idle === 1).map((r) => r.id), next: rows.length < limit ? undefined : rows[rows.length - 1]!.id };
+  }
+
+  /**
+   * Deletes players in one transaction; returns how many. A player some row still refers to (a
+   * table the pruner's query does not know) is kept: the foreign key refuses, and that one is skipped.
+   */
+  deletePlayers(ids: readonly number[]): number {
+    return this.db.transaction(() => {
+      let deleted = 0;
+      for (const id of ids) {
+        try {
+          deleted += this.s.deletePlayer.run(id).changes;
+        } catch (err) {
+          if ((err as { code?: string }).code !== 'SQLITE_CONSTRAINT_FOREIGNKEY') throw err;
+        }
+      }
+      return deleted;
+    })();
   }
 
   createRoom(r: NewRoom): void {

@@ -7,8 +7,10 @@ import type { ClientMessage, PlayerRef, ServerMessage } from '../../shared/proto
 import { MAX_OPEN_ROOMS_PER_PLAYER } from '../../shared/protocol/index.ts';
 import { claimGame, concede, decide, EMPTY_TALLY, placeCueBall, playShot, shotClockExpired, tallied, type Game, type MatchAction } from '../../shared/rules/index.ts';
 import type { MatchResult, RoomChange, Store } from '../store.ts';
+import { guestName, nameProblem, normalizeName } from '../players/names.ts';
 import { hashToken, newToken } from '../tokens.ts';
 import { describeError, ServiceError } from './errors.ts';
+import { GuestLimit } from './guest-limit.ts';
 import { Lobby, type ConnId } from './lobby.ts';
 import { afterMove, deadlineAfter, gameFor, Room, roomView, type RoomState } from './room.ts';
 
@@ -25,12 +27,27 @@ export interface ServiceOptions {
   readonly now?: () => number;
   /** Where internal errors are reported. */
   readonly log?: (line: string) => void;
+  /** New players one address may make an hour (absent: no limit). */
+  readonly guestsPerAddress?: number;
+  /** How long a player who never played is kept after last seen (ms; absent: for ever). */
+  readonly guestKeepMs?: number;
 }
 
 type Msg<T extends ClientMessage['type']> = Extract<ClientMessage, { type: T }>;
 type Re = string | number | undefined;
 
 const DEFAULT_RACE = { nineball: 1, eightball: 1, snooker: 1, threecushion: 15 } as const;
+
+/** Made-up names tried before giving up; with 31^8 of them a second try is already rare. */
+const GUEST_NAME_TRIES = 10;
+/** last_seen is written at hello only when older than this, so reconnects cost no write. */
+const SEEN_EVERY_MS = 3_600_000;
+/** Players the pruner looks at per tick, so a tick stays short however many there are. */
+const PRUNE_BATCH = 500;
+/** A pass of the pruner starts at start-up and then hourly. */
+const PRUNE_EVERY_MS = 3_600_000;
+/** Forgotten guest limits are swept once a minute. */
+const SWEEP_EVERY_MS = 60_000;
 
 function randomSeed(): number {
   return randomBytes(4).readUInt32LE(0);
@@ -48,6 +65,11 @@ export class GameService {
   private readonly addresses = new Map<ConnId, string>();
   private out: Delivery[] = [];
   private lobbyChanged = false;
+  private readonly guestLimit: GuestLimit | undefined;
+  private sweepAt = 0;
+  /** When the pruner's next pass starts, and the id after which its next batch starts. */
+  private pruneAt = 0;
+  private pruneFrom = 0;
 
   constructor(
     private readonly store: Store,
@@ -56,6 +78,7 @@ export class GameService {
     this.now = options.now ?? Date.now;
     this.log = options.log ?? ((line) => console.error(line));
     this.lobby = new Lobby(this.now());
+    this.guestLimit = options.guestsPerAddress === undefined ? undefined : new GuestLimit(options.guestsPerAddress);
     for (const row of store.openRooms()) this.addRoom(new Room(JSON.parse(row.state) as RoomState));
   }
 
@@ -111,6 +134,7 @@ export class GameService {
   /** Timers: shot clocks that ran out, and seat holds that ended (the opponent may now claim). */
   tick(): Delivery[] {
     const now = this.now();
+    this.housekeeping(now);
     for (const room of [...this.lobby.rooms.values()]) {
       try {
         this.timers(room, now);
@@ -120,6 +144,26 @@ export class GameService {
       }
     }
     return this.flush();
+  }
+
+  /** Forgets idle guest limits, and deletes a batch of players who never played and are long gone. */
+  private housekeeping(now: number): void {
+    if (this.guestLimit && now >= this.sweepAt) {
+      this.guestLimit.sweep(now);
+      this.sweepAt = now + SWEEP_EVERY_MS;
+    }
+    const keep = this.options.guestKeepMs;
+    if (keep === undefined || now < this.pruneAt) return;
+    try {
+      const page = this.store.idlePlayers(this.pruneFrom, now - keep, PRUNE_BATCH);
+      // Someone connected is kept even if they never played (a spectator for weeks).
+      this.store.deletePlayers(page.idle.filter((id) => !this.lobby.connected(String(id))));
+      this.pruneFrom = page.next ?? 0;
+      if (page.next === undefined) this.pruneAt = now + PRUNE_EVERY_MS;
+    } catch (err) {
+      this.pruneAt = now + PRUNE_EVERY_MS;
+      this.log(`pruning players: ${(err as Error).stack ?? String(err)}`);
+    }
   }
 
   private timers(room: Room, now: number): void {
@@ -215,9 +259,11 @@ export class GameService {
       if (!row) throw new ServiceError('bad-token', 'unknown token: say hello without one to start as a new guest');
       player = { id: String(row.id), name: row.name };
       token = msg.token;
+      if (row.lastSeen === null || row.lastSeen + SEEN_EVERY_MS <= this.now()) this.touch(row.id);
     } else {
-      const name = msg.name ?? this.madeUpName();
-      if (this.store.nameTaken(name)) throw new ServiceError('name-taken', `the name "${name}" is taken`);
+      const asked = msg.name === undefined ? undefined : this.freeName(msg.name);
+      this.takeGuest(conn);
+      const name = asked ?? this.madeUpName();
       token = newToken();
       const row = this.store.createPlayer(name, hashToken(token));
       player = { id: String(row.id), name: row.name };
@@ -236,11 +282,45 @@ export class GameService {
     }
   }
 
-  /** A new name for the player: unique without regard to case, shown in every room they sit in. */
+  /** Notes that a player was here; a failed write (the disk) does not refuse their hello. */
+  private touch(id: number): void {
+    try {
+      this.store.touchPlayer(id);
+    } catch (err) {
+      this.log(`last seen of player ${id}: ${(err as Error).stack ?? String(err)}`);
+    }
+  }
+
+  /** A new player from this socket's address, unless the address has made its share this hour. */
+  private takeGuest(conn: ConnId): void {
+    const wait = this.guestLimit?.take(this.addressOf(conn), this.now()) ?? 0;
+    if (wait > 0) {
+      const minutes = Math.ceil(wait / 60_000);
+      throw new ServiceError(
+        'too-many-guests',
+        `too many new players from your address (at most ${this.options.guestsPerAddress} an hour): try again in ${minutes} minute${minutes === 1 ? '' : 's'}, or say hello with the token of a player you already have`,
+      );
+    }
+  }
+
+  /**
+   * A name asked for, normalised: refused when blank-looking or too long once normalised, or when
+   * it looks like another player's name (the same in another case, or with lookalike letters).
+   */
+  private freeName(raw: string, self = 0): string {
+    const name = normalizeName(raw);
+    const problem = nameProblem(name);
+    if (problem !== undefined) throw new ServiceError('bad-name', problem);
+    if (this.store.nameOwner(name, self) !== undefined) throw new ServiceError('name-taken', `the name "${name}" is taken, or one that looks like it`);
+    return name;
+  }
+
+  /** A new name for the player: unique by its lookalike keys, shown in every room they sit in. */
   private rename(conn: ConnId, player: PlayerRef, msg: Msg<'rename'>): void {
-    if (msg.name.toLowerCase() !== player.name.toLowerCase() && this.store.nameTaken(msg.name)) throw new ServiceError('name-taken', `the name "${msg.name}" is taken`);
-    this.store.renamePlayer(Number(player.id), msg.name);
-    const renamed = { id: player.id, name: msg.name };
+    // Their own name in another case or with lookalikes is theirs to take.
+    const name = this.freeName(msg.name, Number(player.id));
+    this.store.renamePlayer(Number(player.id), name);
+    const renamed = { id: player.id, name };
     this.lobby.rename(renamed);
     for (const room of this.roomsOf(player.id)) {
       const next = { ...room.state, seats: room.state.seats.map((p) => (p.id === player.id ? renamed : p)) };
@@ -254,11 +334,13 @@ export class GameService {
     this.lobbyChanged = true;
   }
 
+  /** A free made-up name; a few tries, as a collision in 31^8 names is all but impossible. */
   private madeUpName(): string {
-    for (;;) {
-      const name = `Guest-${randomBytes(3).readUIntLE(0, 3) % 1_000_000}`;
-      if (!this.store.nameTaken(name)) return name;
+    for (let i = 0; i < GUEST_NAME_TRIES; i++) {
+      const name = guestName();
+      if (this.store.nameOwner(name) === undefined) return name;
     }
+    throw new Error(`no free guest name in ${GUEST_NAME_TRIES} tries`);
   }
 
   private create(conn: ConnId, player: PlayerRef, msg: Msg<'create'>): void {

@@ -17,7 +17,7 @@ describe.skipIf(!chromiumAvailable())('the home page in Chromium', () => {
     expect(await page.locator('h1').textContent()).toBe('baize');
     const status = page.locator('#server-status');
     await expect.poll(() => status.getAttribute('class')).toBe('ok');
-    expect(await status.textContent()).toMatch(/^Playing as Guest-\d+$/);
+    expect(await status.textContent()).toMatch(/^Playing as Guest-[A-Z2-9]{8}$/);
     expect(await page.evaluate(() => localStorage.getItem('baize.token'))).toMatch(/^[A-Za-z0-9_-]{40,}$/);
     expect(await page.getByRole('button', { name: 'Create table' }).count()).toBe(1);
     expect(errors).toEqual([]);

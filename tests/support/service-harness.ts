@@ -2,7 +2,7 @@
 // moves: connections are numbers, deliveries are collected per connection.
 import { join } from 'node:path';
 import { openDatabase } from '../../server/database.ts';
-import { GameService, type ConnId, type Delivery } from '../../server/game/service.ts';
+import { GameService, type ConnId, type Delivery, type ServiceOptions } from '../../server/game/service.ts';
 import { Store } from '../../server/store.ts';
 import { parseClientMessage, type ClientMessage, type ServerMessage } from '../../shared/protocol/index.ts';
 import { ROOT, tempDir } from './server-process.ts';
@@ -34,7 +34,7 @@ export function byConn(deliveries: readonly Delivery[]): Map<ConnId, ServerMessa
   return out;
 }
 
-export function openHarness(options: { seatHoldMs?: number; dbPath?: string } = {}): Harness {
+export function openHarness(options: { seatHoldMs?: number; dbPath?: string; service?: Partial<ServiceOptions> } = {}): Harness {
   const dbPath = options.dbPath ?? join(tempDir('baize-service-'), 'baize.db');
   const { db } = openDatabase(dbPath, join(ROOT, 'migrations'));
   const store = new Store(db, () => h.clock);
@@ -60,7 +60,7 @@ export function openHarness(options: { seatHoldMs?: number; dbPath?: string } = 
     inbox: (conn) => inboxes.get(conn) ?? [],
     close: () => db.close(),
   };
-  (h as { service: GameService }).service = new GameService(store, { seatHoldMs: options.seatHoldMs ?? 60_000, now: () => h.clock, log: () => {} });
+  (h as { service: GameService }).service = new GameService(store, { seatHoldMs: options.seatHoldMs ?? 60_000, now: () => h.clock, log: () => {}, ...options.service });
   return h;
 }
 

@@ -35,7 +35,7 @@ describe('the game service', () => {
     expect(ann.token.length).toBeGreaterThan(30);
     expect(errorOf(h.send(2, { type: 'hello', name: 'ANN' }).get(2))?.code).toBe('name-taken');
     const guest = welcome(h, 3);
-    expect(guest.player.name).toMatch(/^Guest-\d+$/);
+    expect(guest.player.name).toMatch(/^Guest-[A-Z2-9]{8}$/);
     const again = welcome(h, 4, undefined, ann.token);
     expect(again.player).toEqual(ann.player);
     expect(errorOf(h.send(5, { type: 'hello', token: 'forged' }).get(5))?.code).toBe('bad-token');
