@@ -45,7 +45,8 @@ export async function startServer(config: Config): Promise<RunningServer> {
     throw err;
   }
   const files = loadStaticFiles(config.clientDir);
-  const http = createServer(createRequestHandler(files, () => ({ ok: db.open, version: VERSION, schema: schemaVersion(db) }), new Api(store)));
+  const api = new Api(store, { perPlayer: config.practicePerMinute, perAddress: config.practicePerAddressPerMinute });
+  const http = createServer(createRequestHandler(files, () => ({ ok: db.open, version: VERSION, schema: schemaVersion(db) }), api));
   try {
     await new Promise<void>((resolve, reject) => {
       const onError = (err: NodeJS.ErrnoException) => {

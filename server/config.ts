@@ -1,6 +1,7 @@
 // The server's configuration, read from the environment once at start.
 import { fileURLToPath } from 'node:url';
 import { resolve } from 'node:path';
+import { PRACTICE_LIMITS } from './api/rate-limit.ts';
 
 export const ROOT = resolve(fileURLToPath(new URL('..', import.meta.url)));
 
@@ -14,6 +15,10 @@ export interface Config {
   readonly seatHoldMs: number;
   /** Interval between pings of each socket (ms). */
   readonly pingMs: number;
+  /** Practice requests (start and submit) a player may make a minute, in bursts up to as many. */
+  readonly practicePerMinute: number;
+  /** Practice requests one address (an IPv6 /64) may make a minute, in bursts up to as many. */
+  readonly practicePerAddressPerMinute: number;
 }
 
 function seconds(env: NodeJS.ProcessEnv, name: string, fallback: number): number {
@@ -24,6 +29,16 @@ function seconds(env: NodeJS.ProcessEnv, name: string, fallback: number): number
     throw new RangeError(`${name} must be a number of seconds above 0 and at most 86400, got "${text}"`);
   }
   return value * 1000;
+}
+
+function perMinute(env: NodeJS.ProcessEnv, name: string, fallback: number): number {
+  const text = env[name];
+  if (text === undefined) return fallback;
+  const value = Number(text);
+  if (!/^\d+$/.test(text) || value < 1 || value > 1_000_000) {
+    throw new RangeError(`${name} must be a whole number of requests a minute from 1 to 1000000, got "${text}"`);
+  }
+  return value;
 }
 
 export function readConfig(env: NodeJS.ProcessEnv = process.env): Config {
@@ -42,5 +57,7 @@ export function readConfig(env: NodeJS.ProcessEnv = process.env): Config {
     clientDir: resolve(env.BAIZE_CLIENT_DIR ?? resolve(ROOT, 'dist/client')),
     seatHoldMs: seconds(env, 'BAIZE_SEAT_HOLD_S', 60),
     pingMs: seconds(env, 'BAIZE_PING_S', 15),
+    practicePerMinute: perMinute(env, 'BAIZE_PRACTICE_PER_MINUTE', PRACTICE_LIMITS.perPlayer),
+    practicePerAddressPerMinute: perMinute(env, 'BAIZE_PRACTICE_PER_ADDRESS_PER_MINUTE', PRACTICE_LIMITS.perAddress),
   };
 }
