@@ -15,9 +15,9 @@ export interface Config {
   readonly seatHoldMs: number;
   /** Interval between pings of each socket (ms). */
   readonly pingMs: number;
-  /** Practice requests (start and submit) a player may make a minute, in bursts up to as many. */
+  /** Practice requests (start and submit) a player may make a minute. */
   readonly practicePerMinute: number;
-  /** Practice requests one address (an IPv6 /64) may make a minute, in bursts up to as many. */
+  /** Practice requests one address (an IPv6 /64) may make a minute. */
   readonly practicePerAddressPerMinute: number;
 }
 

@@ -215,8 +215,18 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
       const best = res.records.some((x) => x.standing) ? ' A new personal practice record.' : '';
       info.textContent = `The server replayed your run: score ${res.score} (run ${res.id}).${best} Start a new run for another.`;
     } catch (err) {
-      // A run the server did not take keeps its seed: it can be sent again once online.
-      info.textContent = err instanceof ApiRefusal ? `Not submitted: ${err.message}` : 'Not submitted: the server cannot be reached. Try again once online.';
+      // A run the server did not take keeps its seed: it can be sent again once online. A seed
+      // used or expired cannot.
+      const code = err instanceof ApiRefusal ? err.code : null;
+      if (code === 'seed-used' || code === 'seed-not-issued') r.submitted = true;
+      info.textContent =
+        code === 'seed-used'
+          ? 'Not submitted: this run was submitted already. Start a new run for another.'
+          : code === 'seed-not-issued'
+            ? 'Not submitted: the run was started too long ago (over 6 hours, or 20 runs since). Start a new run.'
+            : err instanceof ApiRefusal
+              ? `Not submitted: ${err.message}`
+              : 'Not submitted: the server cannot be reached. Try again once online.';
     }
     if (run === r) refresh();
   }

@@ -1,6 +1,7 @@
 // Rate limits of the HTTP API: a token bucket per key (a player, an address), each refilling at
-// `perMinute` a minute up to a minute's worth. The buckets kept are bounded: the one used least
-// recently goes first, and a bucket left idle long enough to refill is no different from a new one.
+// `perMinute` a minute and holding ten seconds' worth (at least MIN_BURST), so that a burst cannot
+// pile up a minute of work at once. The buckets kept are bounded: the one used least recently goes
+// first, and a bucket left idle long enough to refill is no different from a new one.
 
 /** Practice requests a minute when not configured: a player's, and an address's (several players). */
 export const PRACTICE_LIMITS = { perPlayer: 30, perAddress: 300 } as const;
@@ -10,6 +11,9 @@ export interface PracticeLimits {
   readonly perAddress: number;
 }
 
+/** The fewest requests a bucket holds: a player's few quick runs in a row always pass. */
+export const MIN_BURST = 5;
+
 interface Bucket {
   tokens: number;
   at: number;
@@ -17,6 +21,8 @@ interface Bucket {
 
 export class RateLimiter {
   private readonly buckets = new Map<string, Bucket>();
+  /** Requests a full bucket holds. */
+  readonly burst: number;
 
   constructor(
     private readonly perMinute: number,
@@ -24,12 +30,13 @@ export class RateLimiter {
   ) {
     if (!(Number.isFinite(perMinute) && perMinute >= 1)) throw new RangeError(`perMinute must be 1 or more, got ${perMinute}`);
     if (!(Number.isInteger(maxKeys) && maxKeys >= 1)) throw new RangeError(`maxKeys must be a whole number from 1, got ${maxKeys}`);
+    this.burst = Math.max(MIN_BURST, Math.ceil(perMinute / 6));
   }
 
   /** Takes one request from `key`'s bucket at `now` (ms): 0 when allowed, else the whole seconds to wait. */
   take(key: string, now: number): number {
     const b = this.buckets.get(key);
-    const tokens = b ? Math.min(this.perMinute, b.tokens + (Math.max(0, now - b.at) * this.perMinute) / 60_000) : this.perMinute;
+    const tokens = b ? Math.min(this.burst, b.tokens + (Math.max(0, now - b.at) * this.perMinute) / 60_000) : this.burst;
     // Moved to the end of the map's order: the first key is the least recently used.
     this.buckets.delete(key);
     if (tokens < 1) {

@@ -15,7 +15,8 @@ let url: string;
 const seats: Seat[] = [];
 
 beforeAll(async () => {
-  server = await startServerProcess({ BAIZE_DB: join(tempDir(), 'baize.db') });
+  // Practice limits these tests never meet (practice.test.ts tests them).
+  server = await startServerProcess({ BAIZE_DB: join(tempDir(), 'baize.db'), BAIZE_PRACTICE_PER_MINUTE: '100000', BAIZE_PRACTICE_PER_ADDRESS_PER_MINUTE: '100000' });
   url = wsUrl(server.url);
 });
 afterAll(async () => {

@@ -2,13 +2,15 @@
 // is enough, a bounded number of buckets, and addresses keyed as one subscriber's.
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { addressKey, PRACTICE_LIMITS, RateLimiter } from '../../../server/api/rate-limit.ts';
+import { addressKey, MIN_BURST, PRACTICE_LIMITS, RateLimiter } from '../../../server/api/rate-limit.ts';
 import { readConfig } from '../../../server/config.ts';
 
 describe('the rate limiter', () => {
-  it('takes a minute\'s worth at once, then one every 60/rate seconds, and says how long to wait', () => {
-    const l = new RateLimiter(6); // one every 10 s
-    for (let i = 0; i < 6; i++) expect(l.take('a', 0)).toBe(0);
+  it('takes ten seconds\' worth (at least 5) at once, then one every 60/rate seconds, and says how long to wait', () => {
+    expect(new RateLimiter(600).burst).toBe(100);
+    expect(new RateLimiter(12).burst).toBe(MIN_BURST);
+    const l = new RateLimiter(6); // one every 10 s, 5 at once
+    for (let i = 0; i < 5; i++) expect(l.take('a', 0)).toBe(0);
     expect(l.take('a', 0)).toBe(10);
     expect(l.take('a', 4_000)).toBe(6);
     expect(l.take('b', 4_000)).toBe(0); // another key has its own bucket
@@ -16,7 +18,7 @@ describe('the rate limiter', () => {
     expect(l.take('a', 10_000)).toBe(10);
   });
 
-  it('never lets more through than a minute\'s worth plus the rate over the time (property)', () => {
+  it('never lets more through than a full bucket plus the rate over the time (property)', () => {
     fc.assert(
       fc.property(fc.integer({ min: 1, max: 120 }), fc.array(fc.integer({ min: 0, max: 5_000 }), { minLength: 1, maxLength: 300 }), (perMinute, gaps) => {
         const l = new RateLimiter(perMinute);
@@ -28,7 +30,7 @@ describe('the rate limiter', () => {
           if (wait === 0) passed++;
           else expect(wait).toBeGreaterThanOrEqual(1);
         }
-        expect(passed).toBeLessThanOrEqual(perMinute + Math.floor((perMinute * t) / 60_000));
+        expect(passed).toBeLessThanOrEqual(l.burst + Math.floor((perMinute * t) / 60_000));
       }),
     );
   });
@@ -37,7 +39,7 @@ describe('the rate limiter', () => {
     fc.assert(
       fc.property(fc.integer({ min: 1, max: 600 }), fc.integer({ min: 0, max: 59_999 }), (perMinute, at) => {
         const l = new RateLimiter(perMinute);
-        for (let i = 0; i < perMinute; i++) l.take('k', 0);
+        for (let i = 0; i < l.burst; i++) l.take('k', 0);
         const wait = l.take('k', at);
         if (wait > 0) expect(l.take('k', at + wait * 1000)).toBe(0);
       }),
@@ -46,8 +48,7 @@ describe('the rate limiter', () => {
 
   it('holds a bounded number of buckets, and keeps the one of a key that keeps asking', () => {
     const l = new RateLimiter(2, 100);
-    l.take('flood', 0);
-    l.take('flood', 0);
+    for (let i = 0; i < l.burst; i++) l.take('flood', 0);
     for (let i = 0; i < 5_000; i++) {
       l.take(`addr-${i}`, 0);
       if (i % 50 === 0) expect(l.take('flood', 0)).toBeGreaterThan(0);
