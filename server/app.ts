@@ -52,7 +52,8 @@ export async function startServer(config: Config): Promise<RunningServer> {
   }
   const files = loadStaticFiles(config.clientDir);
   const health = healthCheck({ version: VERSION, schema: () => schemaVersion(db), probeWrite: () => store.probeWrite(HEALTH_LOCK_WAIT_MS) });
-  const http = createServer(createRequestHandler(files, health, new Api(store)));
+  const api = new Api(store, { perPlayer: config.practicePerMinute, perAddress: config.practicePerAddressPerMinute });
+  const http = createServer(createRequestHandler(files, health, api));
   try {
     await new Promise<void>((resolve, reject) => {
       const onError = (err: NodeJS.ErrnoException) => {

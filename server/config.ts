@@ -1,6 +1,7 @@
 // The server's configuration, read from the environment once at start.
 import { fileURLToPath } from 'node:url';
 import { resolve } from 'node:path';
+import { PRACTICE_LIMITS } from './api/rate-limit.ts';
 
 export const ROOT = resolve(fileURLToPath(new URL('..', import.meta.url)));
 
@@ -18,6 +19,10 @@ export interface Config {
   readonly guestsPerAddress: number;
   /** How long a player who never played is kept after they were last seen (ms). */
   readonly guestKeepMs: number;
+  /** Practice requests (start and submit) a player may make a minute. */
+  readonly practicePerMinute: number;
+  /** Practice requests one address (an IPv6 /64) may make a minute. */
+  readonly practicePerAddressPerMinute: number;
 }
 
 function seconds(env: NodeJS.ProcessEnv, name: string, fallback: number): number {
@@ -59,5 +64,7 @@ export function readConfig(env: NodeJS.ProcessEnv = process.env): Config {
     pingMs: seconds(env, 'BAIZE_PING_S', 15),
     guestsPerAddress: count(env, 'BAIZE_GUESTS_PER_ADDRESS', 20, 1_000_000_000, 'new players an hour'),
     guestKeepMs: count(env, 'BAIZE_GUEST_KEEP_DAYS', 30, 36_500, 'days') * 86_400_000,
+    practicePerMinute: count(env, 'BAIZE_PRACTICE_PER_MINUTE', PRACTICE_LIMITS.perPlayer, 1_000_000, 'requests a minute'),
+    practicePerAddressPerMinute: count(env, 'BAIZE_PRACTICE_PER_ADDRESS_PER_MINUTE', PRACTICE_LIMITS.perAddress, 1_000_000, 'requests a minute'),
   };
 }

@@ -76,6 +76,27 @@ export interface RoomChange {
   readonly result?: MatchResult;
 }
 
+/** Where a record comes from: a finished match, or a practice run. */
+export type RecordSource = 'match' | 'practice';
+
+/** How long an issued practice seed can be used (ms); older ones are deleted, used or not. */
+export const PRACTICE_SEED_TTL_MS = 6 * 3600_000;
+/** Unused seeds a player may hold; issuing another retires the oldest. */
+export const PRACTICE_OPEN_SEEDS = 20;
+/** Expired seeds are deleted at most this often (ms), when a seed is issued. */
+const SEED_SWEEP_MS = 10 * 60_000;
+
+/** A practice seed as a submission finds it: issued and unused, used, or unknown (never issued to
+ * this player for this kind, retired, or expired). */
+export type PracticeSeedState = 'open' | 'used' | 'unknown';
+
+/** Thrown by savePractice when its seed is not open; nothing is written. */
+export class PracticeSeedError extends Error {
+  constructor(readonly state: Exclude<PracticeSeedState, 'open'>) {
+    super(`practice seed ${state}`);
+  }
+}
+
 export interface BoardRow {
   readonly id: number;
   readonly name: string;
@@ -123,6 +144,8 @@ export class Store {
   private readonly s;
   /** Rated players per kind, counted once and forgotten when a rating is added. */
   private readonly ratedCount = new Map<string, number>();
+  /** When expired practice seeds were last deleted. */
+  private seedsSweptAt = -Infinity;
 
   constructor(
     private readonly db: Database,
@@ -150,7 +173,8 @@ export class Store {
            AND NOT EXISTS (SELECT 1 FROM rooms WHERE created_by = p.id)
            AND NOT EXISTS (SELECT 1 FROM ratings WHERE player_id = p.id)
            AND NOT EXISTS (SELECT 1 FROM records WHERE player_id = p.id)
-           AND NOT EXISTS (SELECT 1 FROM practice_runs WHERE player_id = p.id)) AS idle
+           AND NOT EXISTS (SELECT 1 FROM practice_runs WHERE player_id = p.id)
+           AND NOT EXISTS (SELECT 1 FROM practice_seeds WHERE player_id = p.id)) AS idle
          FROM players p WHERE p.id > ? ORDER BY p.id LIMIT ?`,
       ),
       deletePlayer: db.prepare<[number]>('DELETE FROM players WHERE id = ?'),
@@ -195,9 +219,14 @@ export class Store {
       ratingsOf: db.prepare<[number], { kind: string } & BoardRow>(
         'SELECT kind, player_id AS id, \'\' AS name, rating, rd, games, wins FROM ratings WHERE player_id = ? ORDER BY kind',
       ),
-      // Likewise: the page's ids from the covering index records_board, then their rows.
-      records: db.prepare<[string, number, number], RecordEntry>(
-        `SELECT ${RECORD_COLUMNS} WHERE rec.id IN (SELECT id FROM records WHERE kind = ? ORDER BY better DESC, id LIMIT ? OFFSET ?)
+      // Likewise: the page's ids from the covering index of its board (records_board_match or
+      // records_board_practice), then their rows.
+      recordsMatch: db.prepare<[string, number, number], RecordEntry>(
+        `SELECT ${RECORD_COLUMNS} WHERE rec.id IN (SELECT id FROM records WHERE kind = ? AND match_id IS NOT NULL ORDER BY better DESC, id LIMIT ? OFFSET ?)
+         ORDER BY rec.better DESC, rec.id`,
+      ),
+      recordsPractice: db.prepare<[string, number, number], RecordEntry>(
+        `SELECT ${RECORD_COLUMNS} WHERE rec.id IN (SELECT id FROM records WHERE kind = ? AND practice_id IS NOT NULL ORDER BY better DESC, id LIMIT ? OFFSET ?)
          ORDER BY rec.better DESC, rec.id`,
       ),
       // A player's best record of each kind: the first row of each kind in records_player_best.
@@ -221,6 +250,29 @@ export class Store {
       match: db.prepare<[number], MatchRow & { start: string | null }>(`SELECT ${MATCH_COLUMNS.replace('m.id,', 'm.id, m.start,')} WHERE m.id = ?`),
       insertPractice: db.prepare<[number, string, number, string, number, number]>(
         'INSERT INTO practice_runs (player_id, kind, seed, shots, score, created_at) VALUES (?, ?, ?, ?, ?, ?)',
+      ),
+      issueSeed: db.prepare<[number, string, number, number]>(
+        'INSERT INTO practice_seeds (player_id, kind, seed, issued_at) VALUES (?, ?, ?, ?) ON CONFLICT (player_id, kind, seed) DO NOTHING',
+      ),
+      retireSeeds: db.prepare<[number, number, number]>(
+        `DELETE FROM practice_seeds WHERE id IN (
+           SELECT id FROM practice_seeds WHERE player_id = ? AND used_at IS NULL AND issued_at >= ? ORDER BY id DESC LIMIT -1 OFFSET ?)`,
+      ),
+      sweepSeeds: db.prepare<[number]>('DELETE FROM practice_seeds WHERE issued_at < ?'),
+      seed: db.prepare<[number, string, number], { issuedAt: number; usedAt: number | null }>(
+        'SELECT issued_at AS issuedAt, used_at AS usedAt FROM practice_seeds WHERE player_id = ? AND kind = ? AND seed = ?',
+      ),
+      useSeed: db.prepare<[number, number, string, number, number]>(
+        'UPDATE practice_seeds SET used_at = ? WHERE player_id = ? AND kind = ? AND seed = ? AND used_at IS NULL AND issued_at >= ?',
+      ),
+      // A practice record stands alone per player, kind and type: a better one replaces it (a new
+      // row, so that ties rank by who got there first), a worse or equal one is not kept.
+      dropWorsePractice: db.prepare<[number, string, string, number]>(
+        'DELETE FROM records WHERE practice_id IS NOT NULL AND player_id = ? AND kind = ? AND what = ? AND better < ?',
+      ),
+      insertPracticeRecord: db.prepare<[string, string, number, number, number, number, number]>(
+        `INSERT INTO records (kind, what, player_id, value, better, match_id, practice_id, created_at) VALUES (?, ?, ?, ?, ?, NULL, ?, ?)
+         ON CONFLICT (player_id, kind, what) WHERE practice_id IS NOT NULL DO NOTHING`,
       ),
     };
     this.fillNameKeys();
@@ -393,8 +445,9 @@ export class Store {
     return this.s.ratingsOf.all(playerId);
   }
 
-  records(kind: string, limit: number, offset: number): RecordEntry[] {
-    return this.s.records.all(kind, limit, offset);
+  /** A page of a kind's records from matches (the default) or from practice, best first. */
+  records(kind: string, limit: number, offset: number, source: RecordSource = 'match'): RecordEntry[] {
+    return (source === 'practice' ? this.s.recordsPractice : this.s.recordsMatch).all(kind, limit, offset);
   }
 
   /** A player's best record of each kind that has records. */
@@ -413,13 +466,52 @@ export class Store {
     return this.s.match.get(id);
   }
 
-  /** A verified practice run and the records it sets, in one transaction; returns its id. */
-  savePractice(run: { player: number; kind: string; seed: number; shots: string; score: number; records: readonly RecordRow[] }): number {
+  /**
+   * Issues a practice seed to a player for a kind and returns the time issued; null when that
+   * player already holds that seed for that kind (draw another). Retires the player's oldest unused seeds beyond
+   * PRACTICE_OPEN_SEEDS, and now and then deletes the expired ones of everyone.
+   */
+  issuePracticeSeed(player: number, kind: string, seed: number): number | null {
     return this.db.transaction(() => {
       const now = this.now();
+      if (now - this.seedsSweptAt >= SEED_SWEEP_MS) this.sweepPracticeSeeds();
+      if (this.s.issueSeed.run(player, kind, seed, now).changes !== 1) return null;
+      this.s.retireSeeds.run(player, now - PRACTICE_SEED_TTL_MS, PRACTICE_OPEN_SEEDS);
+      return now;
+    })();
+  }
+
+  /** Deletes the seeds issued longer ago than PRACTICE_SEED_TTL_MS, used or not; returns how many. */
+  sweepPracticeSeeds(): number {
+    const now = this.now();
+    this.seedsSweptAt = now;
+    return this.s.sweepSeeds.run(now - PRACTICE_SEED_TTL_MS).changes;
+  }
+
+  practiceSeedState(player: number, kind: string, seed: number): PracticeSeedState {
+    const row = this.s.seed.get(player, kind, seed);
+    if (!row || row.issuedAt < this.now() - PRACTICE_SEED_TTL_MS) return 'unknown';
+    return row.usedAt === null ? 'open' : 'used';
+  }
+
+  /**
+   * A verified practice run, in one transaction: its seed marked used (a PracticeSeedError, and
+   * nothing written, unless the seed is open), the run, and each record that beats the player's
+   * standing practice record of its kind and type (which it replaces). Returns the run's id and,
+   * for each record, whether it now stands.
+   */
+  savePractice(run: { player: number; kind: string; seed: number; shots: string; score: number; records: readonly RecordRow[] }): { id: number; standing: boolean[] } {
+    return this.db.transaction(() => {
+      const now = this.now();
+      if (this.s.useSeed.run(now, run.player, run.kind, run.seed, now - PRACTICE_SEED_TTL_MS).changes !== 1) {
+        throw new PracticeSeedError(this.practiceSeedState(run.player, run.kind, run.seed) === 'used' ? 'used' : 'unknown');
+      }
       const id = Number(this.s.insertPractice.run(run.player, run.kind, run.seed, run.shots, run.score, now).lastInsertRowid);
-      for (const rec of run.records) this.s.insertRecord.run(run.kind, rec.what, rec.player, rec.value, rec.better, null, id, now);
-      return id;
+      const standing = run.records.map((rec) => {
+        this.s.dropWorsePractice.run(rec.player, run.kind, rec.what, rec.better);
+        return this.s.insertPracticeRecord.run(run.kind, rec.what, rec.player, rec.value, rec.better, id, now).changes === 1;
+      });
+      return { id, standing };
     })();
   }
 

@@ -1,11 +1,14 @@
 // Practice, all in the browser (it plays with the network off once loaded): free practice on any
 // game's layout with free placement and undo, and verified runs (snooker break building, a
 // nine-ball run-out from the break, a three-cushion run) whose shots the server replays to score.
+// A run to submit starts from a seed the server issues; offline, a run plays from a seed of its
+// own and cannot be submitted.
 import {
   cueBallId,
   newGame,
   placeBall,
   playShot,
+  practiceStart,
   PRACTICE_OPPONENT,
   undo,
   type Game,
@@ -16,7 +19,7 @@ import {
 import type { Outcome } from '../../shared/physics/index.ts';
 import { h, KIND_NAMES } from '../dom.ts';
 import type { PageContext } from '../main.ts';
-import { api } from '../net/api.ts';
+import { ApiRefusal, practiceSeed, submitPractice } from '../net/api.ts';
 import { storedToken } from '../net/session.ts';
 import { Aim } from '../table/aim.ts';
 import { Animator } from '../table/animator.ts';
@@ -25,6 +28,9 @@ import { TableView } from '../table/view.ts';
 import { inWords } from '../verdict.ts';
 
 const ME = 'me';
+
+/** A seed of this browser's own, for a run played offline (never submitted). */
+const localSeed = () => Math.floor(Math.random() * 2 ** 32);
 
 export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
   const mode = h('select', { 'aria-label': 'Practice' }, h('option', { value: 'free' }, 'Free practice'), h('option', { value: 'run' }, 'Verified run'));
@@ -56,7 +62,12 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
   let game: Game;
   let last: Outcome | null = null;
   let busy = false;
-  let run: { kind: PracticeKind; seed: number; shots: PracticeShot[]; score: number } | null = null;
+  /** A run waits for its seed from the server. */
+  let waiting = false;
+  /** Counts the runs started, so that a seed arriving for an earlier one is dropped. */
+  let started = 0;
+  /** `issued`: the seed came from the server, so the run can be submitted (once). */
+  let run: { kind: PracticeKind; seed: number; issued: boolean; submitted: boolean; shots: PracticeShot[]; score: number } | null = null;
 
   const setup = (g: Game) => {
     game = g;
@@ -77,7 +88,7 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
   };
 
   const refresh = () => {
-    const active = !busy && !placing.checked && game.winner === null && game.turn === ME;
+    const active = !busy && !waiting && !run?.submitted && !placing.checked && game.winner === null && game.turn === ME;
     aim!.set(game, cueBallId(game), active, 'path', () => {
       controls?.sync();
       if (!animator.playing) view!.draw(aim!.balls());
@@ -88,26 +99,43 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
     runKind.hidden = mode.value !== 'run';
     submit.hidden = mode.value !== 'run';
     undoButton.hidden = mode.value !== 'free';
-    submit.disabled = !run || run.shots.length === 0;
+    submit.disabled = !run || !run.issued || run.submitted || run.shots.length === 0;
   };
 
   function reset(): void {
     last = null;
+    const mine = ++started;
+    waiting = false;
+    run = null;
     if (mode.value === 'free') {
-      run = null;
       setup(newGame('practice', [ME], { layout: layout.value as PracticeLayout }));
       info.textContent = 'Free practice: aim with the mouse (a click holds the aim) or the arrow keys, Space or Shoot to play.';
-    } else {
-      const seed = Math.floor(Math.random() * 0xffffffff);
-      const kind = runKind.value as PracticeKind;
-      run = { kind, seed, shots: [], score: 0 };
-      setup(newGame(kind, [ME, PRACTICE_OPPONENT], { seed, raceTo: 1 }));
-      info.textContent = `Verified run: play while you stay at the table, then submit. Score 0.`;
+      return;
     }
+    const kind = runKind.value as PracticeKind;
+    const begin = (seed: number, issued: boolean, note: string) => {
+      waiting = false;
+      run = { kind, seed, issued, submitted: false, shots: [], score: 0 };
+      setup(practiceStart(kind, ME, seed));
+      info.textContent = note;
+    };
+    const unsubmittable = 'you can play this run, but it will not be submitted. Runs started while connected to the server can be submitted.';
+    const token = storedToken();
+    if (!token) {
+      begin(localSeed(), false, `Not connected to the server yet: ${unsubmittable}`);
+      return;
+    }
+    waiting = true;
+    setup(practiceStart(kind, ME, 0));
+    info.textContent = 'Asking the server to set up the run…';
+    practiceSeed(token, kind).then(
+      (seed) => mine === started && begin(seed, true, 'Verified run: play while you stay at the table, then submit. Score 0.'),
+      (err: Error) => mine === started && begin(localSeed(), false, err instanceof ApiRefusal ? `The server did not set up the run (${err.message}): ${unsubmittable}` : `Offline: ${unsubmittable}`),
+    );
   }
 
   function shoot(): void {
-    if (busy || placing.checked || game.winner !== null || game.turn !== ME || !aim) return;
+    if (busy || waiting || run?.submitted || placing.checked || game.winner !== null || game.turn !== ME || !aim) return;
     const s = aim.state;
     const shot = { ball: cueBallId(game), heading: s.heading, speed: s.speed, side: s.side, top: s.top };
     let played;
@@ -131,7 +159,8 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
       busy = false;
       game = played.game;
       const over = run && (game.turn !== ME || game.winner !== null);
-      info.textContent = `${inWords(v.message, (id) => (id === ME ? 'you' : id === PRACTICE_OPPONENT ? 'the table' : undefined))}${run ? ` Score ${run.score}.${over ? ' The run is over: submit it.' : ''}` : ''}`;
+      const end = !over ? '' : run?.issued ? ' The run is over: submit it.' : ' The run is over (offline: not submitted).';
+      info.textContent = `${inWords(v.message, (id) => (id === ME ? 'you' : id === PRACTICE_OPPONENT ? 'the table' : undefined))}${run ? ` Score ${run.score}.${end}` : ''}`;
       refresh();
     });
   }
@@ -174,20 +203,32 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
 
   async function send(): Promise<void> {
     const token = storedToken();
-    if (!run || !token) {
-      info.textContent = 'Connect once to the server to submit runs.';
+    const r = run;
+    if (!r || !r.issued || r.submitted || !token) {
+      info.textContent = 'Only a run started while connected to the server can be submitted, and only once.';
       return;
     }
+    submit.disabled = true;
     try {
-      const r = await api<{ id: number; score: number }>('/api/practice', {
-        method: 'POST',
-        headers: { 'content-type': 'application/json' },
-        body: JSON.stringify({ token, kind: run.kind, seed: run.seed, shots: run.shots }),
-      });
-      info.textContent = `The server replayed your run: score ${r.score} (run ${r.id}).`;
+      const res = await submitPractice({ token, kind: r.kind, seed: r.seed, shots: r.shots });
+      r.submitted = true;
+      const best = res.records.some((x) => x.standing) ? ' A new personal practice record.' : '';
+      info.textContent = `The server replayed your run: score ${res.score} (run ${res.id}).${best} Start a new run for another.`;
     } catch (err) {
-      info.textContent = `Not submitted: ${(err as Error).message}`;
+      // A run the server did not take keeps its seed: it can be sent again once online. A seed
+      // used or expired cannot.
+      const code = err instanceof ApiRefusal ? err.code : null;
+      if (code === 'seed-used' || code === 'seed-not-issued') r.submitted = true;
+      info.textContent =
+        code === 'seed-used'
+          ? 'Not submitted: this run was submitted already. Start a new run for another.'
+          : code === 'seed-not-issued'
+            ? 'Not submitted: the run was started too long ago (over 6 hours, or 20 runs since). Start a new run.'
+            : err instanceof ApiRefusal
+              ? `Not submitted: ${err.message}`
+              : 'Not submitted: the server cannot be reached. Try again once online.';
     }
+    if (run === r) refresh();
   }
 
   mode.addEventListener('change', reset);
@@ -201,6 +242,7 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
   reset();
   void ctx;
   return () => {
+    started++; // a seed still on its way is dropped
     stopSpace();
     animator?.stop();
     view?.destroy();

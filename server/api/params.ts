@@ -1,14 +1,16 @@
-// The HTTP API's inputs: query parameters and the practice body, each checked by a valibot schema,
-// and the error every refusal becomes (400 naming the parameter, 404 for an unknown id).
+// The HTTP API's inputs: query parameters and the practice bodies, each checked by a valibot
+// schema, and the error every refusal becomes (400 naming the parameter, 404 for an unknown id).
 import * as v from 'valibot';
 import { GAME_KINDS, PointSchema, ShotSchema } from '../../shared/protocol/index.ts';
-import { PRACTICE_KINDS } from '../../shared/rules/index.ts';
+import { PRACTICE_KINDS, PRACTICE_MAX_SHOTS } from '../../shared/rules/index.ts';
 
 export class ApiError extends Error {
   constructor(
-    readonly status: 400 | 404 | 405 | 413,
+    readonly status: 400 | 404 | 405 | 409 | 413 | 429,
     readonly error: string,
     message: string,
+    /** Headers the answer carries (Retry-After on a 429). */
+    readonly headers: Readonly<Record<string, string>> = {},
   ) {
     super(message);
   }
@@ -35,6 +37,7 @@ export const LeaderboardQuery = v.object({
 
 export const RecordsQuery = v.object({
   kind: kindOf(PRACTICE_KINDS),
+  source: v.optional(v.picklist(['match', 'practice'], 'source must be match or practice'), 'match'),
   limit: v.optional(int('limit', 1, 100), '20'),
   offset: v.optional(int('offset', 0, 1_000_000_000), '0'),
 });
@@ -48,13 +51,24 @@ export const MatchesQuery = v.object({
 
 export const IdParam = int('id', 1, Number.MAX_SAFE_INTEGER);
 
-/** Shots a practice run may have. */
-export const PRACTICE_MAX_SHOTS = 500;
+export { PRACTICE_MAX_SHOTS };
+
+const Token = v.pipe(v.string('token must be a string'), v.minLength(1, 'token must not be empty'), v.maxLength(128, 'token is too long'));
+
+export const PracticeStartBody = v.object({
+  token: Token,
+  kind: kindOf(PRACTICE_KINDS),
+});
 
 export const PracticeBody = v.object({
-  token: v.pipe(v.string('token must be a string'), v.minLength(1, 'token must not be empty'), v.maxLength(128, 'token is too long')),
+  token: Token,
   kind: kindOf(PRACTICE_KINDS),
-  seed: v.optional(v.pipe(v.number('seed must be a number'), v.integer('seed must be a whole number'), v.minValue(0, 'seed must be 0 or more'), v.maxValue(0xffffffff, 'seed must fit 32 bits'))),
+  seed: v.pipe(
+    v.number('seed must be the number POST /api/practice/start answered'),
+    v.integer('seed must be a whole number'),
+    v.minValue(0, 'seed must be 0 or more'),
+    v.maxValue(0xffffffff, 'seed must fit 32 bits'),
+  ),
   shots: v.pipe(
     v.array(v.object({ shot: ShotSchema, cueBall: v.optional(PointSchema) }), 'shots must be an array of { shot, cueBall? }'),
     v.minLength(1, 'shots must not be empty'),

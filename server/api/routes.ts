@@ -1,13 +1,15 @@
 // The HTTP API (docs/api.md): leaderboards, records, players, matches with their replays, and
-// practice runs the server plays itself. JSON in and out; reads go straight to the store.
+// practice runs the server plays itself from seeds it issued. JSON in and out; reads go straight
+// to the store; practice requests are rate-limited per address and per player.
 import { randomBytes } from 'node:crypto';
 import type { IncomingMessage, ServerResponse } from 'node:http';
 import { MiscueError, SimulationInputError } from '../../shared/physics/index.ts';
 import { practiceRun, RuleError, type PracticeKind } from '../../shared/rules/index.ts';
 import { PROVISIONAL_RD } from '../ratings/glicko2.ts';
-import type { MatchRow, RecordEntry, Store } from '../store.ts';
+import { PRACTICE_SEED_TTL_MS, PracticeSeedError, type MatchRow, type PlayerRow, type RecordEntry, type Store } from '../store.ts';
 import { hashToken } from '../tokens.ts';
-import { ApiError, IdParam, LeaderboardQuery, MatchesQuery, parse, PracticeBody, RecordsQuery } from './params.ts';
+import { ApiError, IdParam, LeaderboardQuery, MatchesQuery, parse, PracticeBody, PracticeStartBody, RecordsQuery } from './params.ts';
+import { addressKey, PRACTICE_LIMITS, RateLimiter, type PracticeLimits } from './rate-limit.ts';
 
 /** Largest request body accepted (bytes): a practice run of 500 shots fits well within it. */
 export const MAX_BODY_BYTES = 256 * 1024;
@@ -39,24 +41,39 @@ function recordEntry(r: RecordEntry, rank?: number): Json {
     what: r.what,
     value: r.value,
     player: { id: String(r.playerId), name: r.name },
+    source: r.matchId === null ? 'practice' : 'match',
     ...(r.matchId === null ? {} : { match: r.matchId }),
     ...(r.practiceId === null ? {} : { practice: r.practiceId }),
     at: r.createdAt,
   };
 }
 
+const SEED_HOURS = PRACTICE_SEED_TTL_MS / 3600_000;
+
 export class Api {
-  constructor(private readonly store: Store) {}
+  private readonly perPlayer: RateLimiter;
+  private readonly perAddress: RateLimiter;
+
+  constructor(
+    private readonly store: Store,
+    limits: PracticeLimits = PRACTICE_LIMITS,
+    private readonly now: () => number = Date.now,
+  ) {
+    this.perPlayer = new RateLimiter(limits.perPlayer);
+    this.perAddress = new RateLimiter(limits.perAddress);
+  }
 
   /** Answers a request under /api/; the caller has checked the prefix. */
   async handle(req: IncomingMessage, res: ServerResponse): Promise<void> {
     let status = 200;
     let body: Json;
+    let headers: Readonly<Record<string, string>> = {};
     try {
       body = await this.route(req);
     } catch (err) {
       if (err instanceof ApiError) {
         status = err.status;
+        headers = err.headers;
         body = { error: err.error, message: err.message };
       } else {
         status = 500;
@@ -65,7 +82,7 @@ export class Api {
       }
     }
     const text = JSON.stringify(body);
-    res.writeHead(status, { 'content-type': 'application/json; charset=utf-8', 'content-length': Buffer.byteLength(text), 'cache-control': 'no-store', 'x-content-type-options': 'nosniff' });
+    res.writeHead(status, { ...headers, 'content-type': 'application/json; charset=utf-8', 'content-length': Buffer.byteLength(text), 'cache-control': 'no-store', 'x-content-type-options': 'nosniff' });
     res.end(req.method === 'HEAD' ? undefined : text);
   }
 
@@ -73,9 +90,12 @@ export class Api {
     const url = new URL(req.url ?? '/', 'http://localhost');
     const path = url.pathname;
     const query = Object.fromEntries(url.searchParams);
-    if (path === '/api/practice') {
-      if (req.method !== 'POST') throw new ApiError(405, 'method-not-allowed', 'POST a practice run to /api/practice');
-      return this.practice(await readJson(req));
+    if (path === '/api/practice' || path === '/api/practice/start') {
+      if (req.method !== 'POST') throw new ApiError(405, 'method-not-allowed', `POST to ${path}`);
+      // The address is limited before its body is read, the player once its token is known.
+      this.limit(this.perAddress, addressKey(req.socket.remoteAddress), 'this address');
+      const input = await readJson(req);
+      return path === '/api/practice' ? this.practice(input) : this.practiceStart(input);
     }
     if (req.method !== 'GET' && req.method !== 'HEAD') throw new ApiError(405, 'method-not-allowed', `${req.method} is not allowed on ${path}`);
     if (path === '/api/leaderboard') return this.leaderboard(query);
@@ -110,7 +130,7 @@ export class Api {
 
   private records(query: Json): Json {
     const q = parse(RecordsQuery, query);
-    return { kind: q.kind, entries: this.store.records(q.kind, q.limit, q.offset).map((r, i) => recordEntry(r, q.offset + i + 1)) };
+    return { kind: q.kind, source: q.source, entries: this.store.records(q.kind, q.limit, q.offset, q.source).map((r, i) => recordEntry(r, q.offset + i + 1)) };
   }
 
   private matches(query: Json): Json {
@@ -146,12 +166,44 @@ export class Api {
     };
   }
 
-  /** Plays the run's shots from the start of its game, scores it, and keeps it with its records. */
+  /** Takes a request from `key`'s bucket, or refuses it with a 429 saying when to come back. */
+  private limit(limiter: RateLimiter, key: string, who: string): void {
+    const wait = limiter.take(key, this.now());
+    if (wait > 0) throw new ApiError(429, 'rate-limited', `too many practice requests from ${who}: try again in ${wait} s`, { 'retry-after': String(wait) });
+  }
+
+  /** The player of a practice request's token, within their rate limit. */
+  private practiser(token: string): PlayerRow {
+    const player = this.store.playerByTokenHash(hashToken(token));
+    if (!player) throw new ApiError(400, 'bad-token', 'token: unknown; say hello over the WebSocket to get one');
+    this.limit(this.perPlayer, String(player.id), 'you');
+    return player;
+  }
+
+  /** Issues a seed for a run: the rack it is played from, which the client cannot choose. */
+  private practiceStart(input: unknown): Json {
+    const body = parse(PracticeStartBody, input, 'bad-body');
+    const player = this.practiser(body.token);
+    // A seed the player already holds for this kind is drawn again (about 1 in 200 million).
+    for (let i = 0; i < 8; i++) {
+      const seed = randomBytes(4).readUInt32LE(0);
+      const issuedAt = this.store.issuePracticeSeed(player.id, body.kind, seed);
+      if (issuedAt !== null) return { kind: body.kind, seed, expiresAt: issuedAt + PRACTICE_SEED_TTL_MS };
+    }
+    throw new Error('no new practice seed in 8 draws');
+  }
+
+  /**
+   * Plays the run's shots from the start of its game, scores it, and keeps it with its records;
+   * only from a seed issued to the player for the kind and not used yet, checked before the shots
+   * are played and again as the run is saved.
+   */
   private practice(input: unknown): Json {
     const body = parse(PracticeBody, input, 'bad-body');
-    const player = this.store.playerByTokenHash(hashToken(body.token));
-    if (!player) throw new ApiError(400, 'bad-token', 'token: unknown; say hello over the WebSocket to get one');
-    const seed = body.seed ?? randomBytes(4).readUInt32LE(0);
+    const player = this.practiser(body.token);
+    const seed = body.seed;
+    const state = this.store.practiceSeedState(player.id, body.kind, seed);
+    if (state !== 'open') throw seedRefused(state, body.kind);
     let run;
     try {
       run = practiceRun(body.kind as PracticeKind, String(player.id), seed, body.shots);
@@ -160,9 +212,28 @@ export class Api {
       throw err;
     }
     const records = run.achievements.map((a) => ({ what: a.what, player: player.id, value: a.value, better: a.what === 'break-and-run' ? -a.value : a.value }));
-    const id = this.store.savePractice({ player: player.id, kind: body.kind, seed, shots: JSON.stringify(body.shots), score: run.score, records });
-    return { id, kind: body.kind, seed, score: run.score, shots: run.games.length, records: run.achievements.map((a) => ({ what: a.what, value: a.value })) };
+    let saved;
+    try {
+      saved = this.store.savePractice({ player: player.id, kind: body.kind, seed, shots: JSON.stringify(body.shots), score: run.score, records });
+    } catch (err) {
+      if (err instanceof PracticeSeedError) throw seedRefused(err.state, body.kind);
+      throw err;
+    }
+    return {
+      id: saved.id,
+      kind: body.kind,
+      seed,
+      score: run.score,
+      shots: run.games.length,
+      records: run.achievements.map((a, i) => ({ what: a.what, value: a.value, standing: saved.standing[i] })),
+    };
   }
+}
+
+function seedRefused(state: 'used' | 'unknown', kind: string): ApiError {
+  return state === 'used'
+    ? new ApiError(409, 'seed-used', 'seed: already used for a run; POST /api/practice/start for a new one')
+    : new ApiError(409, 'seed-not-issued', `seed: not issued to you for ${kind}, or expired (a seed lasts ${SEED_HOURS} hours); POST /api/practice/start for one`);
 }
 
 /** Reads a JSON body of at most MAX_BODY_BYTES. */

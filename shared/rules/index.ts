@@ -67,7 +67,7 @@ export { playShot, shotClockExpired } from './play.ts';
 export type { PlayedShot } from './play.ts';
 export { replayMatch, achievements, tallyStep, tallied, EMPTY_TALLY } from './match-record.ts';
 export type { MatchAction, MatchRecord, Replayed, Achievement, Tally } from './match-record.ts';
-export { practiceRun, PRACTICE_KINDS, PRACTICE_OPPONENT } from './practice-run.ts';
+export { practiceRun, practiceStart, PRACTICE_KINDS, PRACTICE_MAX_SHOTS, PRACTICE_OPPONENT } from './practice-run.ts';
 export type { PracticeKind, PracticeRun, PracticeShot } from './practice-run.ts';
 export { SNOOKER_COLOURS, SNOOKER_REDS, SNOOKER_VALUES, POOL_OBJECT_BALLS, CAROM_BALLS } from './racks.ts';
 

@@ -15,6 +15,18 @@ export type PracticeKind = (typeof PRACTICE_KINDS)[number];
 /** The table's other seat in a practice run: never at the table while the run lasts. */
 export const PRACTICE_OPPONENT = 'practice-opponent';
 
+/** Shots a practice run may have. */
+export const PRACTICE_MAX_SHOTS = 500;
+
+/**
+ * The game a practice run starts from. Nine-ball is one rack (a run-out from the break); a snooker
+ * frame has no race; three-cushion races to more points than a run has shots, so the run lasts
+ * while the player scores, never ending at the first point.
+ */
+export function practiceStart(kind: PracticeKind, player: PlayerId, seed: number): Game {
+  return newGame(kind, [player, PRACTICE_OPPONENT], { seed, raceTo: kind === 'threecushion' ? PRACTICE_MAX_SHOTS + 1 : 1 });
+}
+
 export interface PracticeShot {
   readonly shot: StrikeParams & Omit<Partial<Shot>, 'player'>;
   readonly cueBall?: Point;
@@ -34,7 +46,7 @@ export interface PracticeRun {
  * physics' error for a shot it refuses.
  */
 export function practiceRun(kind: PracticeKind, player: PlayerId, seed: number, shots: readonly PracticeShot[]): PracticeRun {
-  const start = newGame(kind, [player, PRACTICE_OPPONENT], { seed, raceTo: 1 });
+  const start = practiceStart(kind, player, seed);
   let game = start;
   const games: Game[] = [];
   let score = 0;

@@ -1,11 +1,12 @@
 // The HTTP API against a real server and SQLite file: ratings from matches played over the
-// protocol, records only from verified play, practice runs the server replays itself, and a 400
-// naming the parameter for every bad request, which stores nothing.
+// protocol, records only from verified play, practice runs the server replays itself from seeds it
+// issued, and a 400 naming the parameter for every bad request, which stores nothing.
+// (tests/integration/practice.test.ts: the seeds, the standing records and the rate limits.)
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { chooseShot } from '../../bots/strategy.ts';
 import { simulate } from '../../shared/physics/index.ts';
-import { newGame, playShot, practiceRun, PRACTICE_OPPONENT, type Game, type PracticeKind, type PracticeShot } from '../../shared/rules/index.ts';
+import { playShot, practiceRun, practiceStart, type Game, type PracticeKind, type PracticeShot } from '../../shared/rules/index.ts';
 import { ask, connect, playTurn, until, wsUrl, type Seat } from '../support/game-clients.ts';
 import { startServerProcess, tempDir, type ServerProcess } from '../support/server-process.ts';
 
@@ -14,7 +15,8 @@ let url: string;
 const seats: Seat[] = [];
 
 beforeAll(async () => {
-  server = await startServerProcess({ BAIZE_DB: join(tempDir(), 'baize.db') });
+  // Practice limits these tests never meet (practice.test.ts tests them).
+  server = await startServerProcess({ BAIZE_DB: join(tempDir(), 'baize.db'), BAIZE_PRACTICE_PER_MINUTE: '100000', BAIZE_PRACTICE_PER_ADDRESS_PER_MINUTE: '100000' });
   url = wsUrl(server.url);
 });
 afterAll(async () => {
@@ -30,6 +32,13 @@ async function get(path: string): Promise<{ status: number; body: any }> {
 async function post(path: string, body: unknown): Promise<{ status: number; body: any }> {
   const res = await fetch(`${server.url}${path}`, { method: 'POST', headers: { 'content-type': 'application/json' }, body: typeof body === 'string' ? body : JSON.stringify(body) });
   return { status: res.status, body: await res.json() };
+}
+
+/** A seed the server issues to the player for a run of `kind`. */
+async function issued(p: Seat, kind: PracticeKind): Promise<number> {
+  const r = await post('/api/practice/start', { token: p.token, kind });
+  expect(r.status, JSON.stringify(r.body)).toBe(200);
+  return r.body.seed as number;
 }
 
 async function player(name: string): Promise<Seat> {
@@ -81,7 +90,7 @@ function scores(game: Game, shot: PracticeShot, playerId: string): Game | null {
  * places in hand), then the sound bot while it keeps the table (at most `max` shots).
  */
 function scoringRun(kind: PracticeKind, playerId: string, seed: number, max = 8): PracticeShot[] {
-  let game: Game = newGame(kind, [playerId, PRACTICE_OPPONENT], { seed, raceTo: 1 });
+  let game: Game = practiceStart(kind, playerId, seed);
   const cue = game.balls.find((b) => b.id === (kind === 'threecushion' ? 'white' : 'cue'))!;
   const places = game.ballInHand === false ? [undefined] : [undefined, { x: cue.x, y: cue.y + 0.1 }, { x: cue.x, y: cue.y - 0.1 }];
   const shots: PracticeShot[] = [];
@@ -157,7 +166,7 @@ describe('the HTTP API', () => {
     const p = await player('Practiser');
     for (const kind of ['snooker', 'nineball', 'threecushion'] as const) {
       // A run that scores, found by playing it locally the way the server will.
-      const seed = 7;
+      const seed = await issued(p, kind);
       const shots = scoringRun(kind, p.player.id, seed);
       const local = practiceRun(kind, p.player.id, seed, shots);
       expect(local.score, kind).toBeGreaterThan(0);
@@ -165,21 +174,21 @@ describe('the HTTP API', () => {
       expect(res.status, JSON.stringify(res.body)).toBe(200);
       expect(res.body).toMatchObject({ kind, seed, score: local.score });
       if (kind !== 'nineball') {
-        const records = await get(`/api/records?kind=${kind}`);
+        const records = await get(`/api/records?kind=${kind}&source=practice`);
         expect(records.body.entries.some((e: any) => e.practice === res.body.id && e.player.id === p.player.id)).toBe(true);
       }
     }
     // The player's page shows their best record of each kind.
     const page = await get(`/api/players/${p.player.id}`);
     for (const kind of ['snooker', 'threecushion']) {
-      const all = (await get(`/api/records?kind=${kind}&limit=100`)).body.entries.filter((e: any) => e.player.id === p.player.id);
+      const all = (await get(`/api/records?kind=${kind}&source=practice&limit=100`)).body.entries.filter((e: any) => e.player.id === p.player.id);
       expect(page.body.records.find((r: any) => r.kind === kind)?.value).toBe(Math.max(...all.map((e: any) => e.value)));
     }
   }, 120_000);
 
   it('answers every bad parameter with a 400 naming it, unknown ids with a 404, and stores nothing', async () => {
     const p = await player('Careless');
-    const before = await get('/api/records?kind=snooker&limit=100');
+    const before = await get('/api/records?kind=snooker&source=practice&limit=100');
     const bad: [string, RegExp][] = [
       ['/api/leaderboard', /kind/],
       ['/api/leaderboard?kind=pool', /kind/],
@@ -188,6 +197,7 @@ describe('the HTTP API', () => {
       ['/api/leaderboard?kind=nineball&limit=ten', /limit/],
       ['/api/leaderboard?kind=nineball&offset=-1', /offset/],
       ['/api/records?kind=eightball', /kind/],
+      ['/api/records?kind=snooker&source=both', /source/],
       ['/api/matches?player=abc', /player/],
       ['/api/matches?kind=chess', /kind/],
       ['/api/matches/abc', /id/],
@@ -202,22 +212,30 @@ describe('the HTTP API', () => {
     expect((await get('/api/players/999999')).status).toBe(404);
     expect((await get('/api/nothing')).status).toBe(404);
     const shot = { ball: 'cue', heading: 0, speed: 3, side: 0, top: 0 };
+    // Refused runs do not use up their seeds.
+    const seed = await issued(p, 'snooker');
+    const nineball = await issued(p, 'nineball');
     const posts: [unknown, number, RegExp][] = [
       ['{"token":', 400, /JSON/],
-      [{ token: p.token, kind: 'snooker' }, 400, /shots/],
-      [{ token: p.token, kind: 'eightball', shots: [{ shot }] }, 400, /kind/],
-      [{ token: 'forged', kind: 'snooker', shots: [{ shot }] }, 400, /token/],
-      [{ token: p.token, kind: 'snooker', shots: [{ shot: { ...shot, speed: 'NaN' } }] }, 400, /speed/],
-      [{ token: p.token, kind: 'snooker', shots: [{ shot: { ...shot, side: 0.45, top: 0.45 } }] }, 400, /shots\[0\].*miscue/],
-      [{ token: p.token, kind: 'snooker', shots: [{ shot: { ...shot, ball: 'red1' } }] }, 400, /shots\[0\]/],
-      [{ token: p.token, kind: 'nineball', seed: 3, shots: [{ shot: { ...shot, speed: 0.3 } }, { shot }] }, 400, /shots\[1\]: the run ended/],
+      [{ token: p.token, kind: 'snooker', seed }, 400, /shots/],
+      [{ token: p.token, kind: 'snooker', shots: [{ shot }] }, 400, /seed/],
+      [{ token: p.token, kind: 'snooker', seed: -1, shots: [{ shot }] }, 400, /seed/],
+      [{ token: p.token, kind: 'eightball', seed, shots: [{ shot }] }, 400, /kind/],
+      [{ token: 'forged', kind: 'snooker', seed, shots: [{ shot }] }, 400, /token/],
+      [{ token: p.token, kind: 'snooker', seed, shots: [{ shot: { ...shot, speed: 'NaN' } }] }, 400, /speed/],
+      [{ token: p.token, kind: 'snooker', seed, shots: [{ shot: { ...shot, side: 0.45, top: 0.45 } }] }, 400, /shots\[0\].*miscue/],
+      [{ token: p.token, kind: 'snooker', seed, shots: [{ shot: { ...shot, ball: 'red1' } }] }, 400, /shots\[0\]/],
+      [{ token: p.token, kind: 'nineball', seed: nineball, shots: [{ shot: { ...shot, speed: 0.3 } }, { shot }] }, 400, /shots\[1\]: the run ended/],
     ];
     for (const [body, status, message] of posts) {
       const r = await post('/api/practice', body);
       expect(r.status, JSON.stringify(body)).toBe(status);
       expect(r.body.message, JSON.stringify(body)).toMatch(message);
     }
-    expect((await get('/api/records?kind=snooker&limit=100')).body).toEqual(before.body);
+    expect((await get('/api/records?kind=snooker&source=practice&limit=100')).body).toEqual(before.body);
     expect((await get(`/api/players/${p.player.id}`)).body).toMatchObject({ games: 0, records: [] });
+    // Both seeds are still good for a run.
+    expect((await post('/api/practice', { token: p.token, kind: 'snooker', seed, shots: [{ shot }] })).status).toBe(200);
+    expect((await post('/api/practice', { token: p.token, kind: 'nineball', seed: nineball, shots: [{ shot: { ...shot, speed: 0.3 } }] })).status).toBe(200);
   }, 60_000);
 });

@@ -1,0 +1,74 @@
+// Rate limits of the HTTP API: a token bucket per key (a player, an address), each refilling at
+// `perMinute` a minute and holding ten seconds' worth (at least MIN_BURST), so that a burst cannot
+// pile up a minute of work at once. The buckets kept are bounded: the one used least recently goes
+// first, and a bucket left idle long enough to refill is no different from a new one.
+
+/** Practice requests a minute when not configured: a player's, and an address's (several players). */
+export const PRACTICE_LIMITS = { perPlayer: 30, perAddress: 300 } as const;
+
+export interface PracticeLimits {
+  readonly perPlayer: number;
+  readonly perAddress: number;
+}
+
+/** The fewest requests a bucket holds: a player's few quick runs in a row always pass. */
+export const MIN_BURST = 5;
+
+interface Bucket {
+  tokens: number;
+  at: number;
+}
+
+export class RateLimiter {
+  private readonly buckets = new Map<string, Bucket>();
+  /** Requests a full bucket holds. */
+  readonly burst: number;
+
+  constructor(
+    private readonly perMinute: number,
+    private readonly maxKeys = 10_000,
+  ) {
+    if (!(Number.isFinite(perMinute) && perMinute >= 1)) throw new RangeError(`perMinute must be 1 or more, got ${perMinute}`);
+    if (!(Number.isInteger(maxKeys) && maxKeys >= 1)) throw new RangeError(`maxKeys must be a whole number from 1, got ${maxKeys}`);
+    this.burst = Math.max(MIN_BURST, Math.ceil(perMinute / 6));
+  }
+
+  /** Takes one request from `key`'s bucket at `now` (ms): 0 when allowed, else the whole seconds to wait. */
+  take(key: string, now: number): number {
+    const b = this.buckets.get(key);
+    const tokens = b ? Math.min(this.burst, b.tokens + (Math.max(0, now - b.at) * this.perMinute) / 60_000) : this.burst;
+    // Moved to the end of the map's order: the first key is the least recently used.
+    this.buckets.delete(key);
+    if (tokens < 1) {
+      this.buckets.set(key, { tokens, at: now });
+      return Math.max(1, Math.ceil(((1 - tokens) * 60) / this.perMinute));
+    }
+    this.buckets.set(key, { tokens: tokens - 1, at: now });
+    if (this.buckets.size > this.maxKeys) this.buckets.delete(this.buckets.keys().next().value!);
+    return 0;
+  }
+
+  /** Buckets held (for tests of the bound). */
+  get size(): number {
+    return this.buckets.size;
+  }
+}
+
+/**
+ * The key of a remote address: IPv4 (also IPv4-mapped IPv6) as it is; IPv6 by its /64, the block
+ * one subscriber usually holds whole.
+ */
+export function addressKey(address: string | undefined): string {
+  if (!address) return 'unknown';
+  const mapped = /^::ffff:(\d+\.\d+\.\d+\.\d+)$/i.exec(address);
+  if (mapped) return mapped[1]!;
+  if (!address.includes(':')) return address;
+  const [head = '', tail] = address.split('%', 1)[0]!.toLowerCase().split('::');
+  const left = head === '' ? [] : head.split(':');
+  const right = tail === undefined || tail === '' ? [] : tail.split(':');
+  const groups = tail === undefined ? left : [...left, ...Array<string>(Math.max(0, 8 - left.length - right.length)).fill('0'), ...right];
+  return `${groups
+    .slice(0, 4)
+    .map((g) => g.replace(/^0+(?=.)/, ''))
+    .join(':')}::/64`;
+}
