@@ -110,6 +110,7 @@ describe('players who never played', () => {
     h.send(3, { type: 'create', kind: 'eightball' });
     h.send(4, { type: 'join', room: last(h, 3, 'room').room.id });
     const practiser = welcome(5, 'Practiser');
+    h.store.issuePracticeSeed(Number(practiser.player.id), 'nineball', 1);
     h.store.savePractice({ player: Number(practiser.player.id), kind: 'nineball', seed: 1, shots: '[]', score: 0, records: [] });
     const returner = welcome(6, 'Returner');
     const here = welcome(7, 'Here');
