@@ -39,7 +39,7 @@ export async function startServer(config: Config): Promise<RunningServer> {
   let service: GameService;
   const store = new Store(db);
   try {
-    service = new GameService(store, { seatHoldMs: config.seatHoldMs });
+    service = new GameService(store, { seatHoldMs: config.seatHoldMs, ratedMinPlayMs: config.ratedMinPlayMs });
   } catch (err) {
     db.close();
     throw err;

@@ -1,6 +1,7 @@
 // The server's configuration, read from the environment once at start.
 import { fileURLToPath } from 'node:url';
 import { resolve } from 'node:path';
+import { RATED_MIN_PLAY_MS } from './ratings/policy.ts';
 
 export const ROOT = resolve(fileURLToPath(new URL('..', import.meta.url)));
 
@@ -14,6 +15,8 @@ export interface Config {
   readonly seatHoldMs: number;
   /** Interval between pings of each socket (ms). */
   readonly pingMs: number;
+  /** Server time from a match's start to its result below which it is not rated (ms; 0: no minimum). */
+  readonly ratedMinPlayMs: number;
 }
 
 function seconds(env: NodeJS.ProcessEnv, name: string, fallback: number): number {
@@ -22,6 +25,17 @@ function seconds(env: NodeJS.ProcessEnv, name: string, fallback: number): number
   const value = Number(text);
   if (text.trim() === '' || !Number.isFinite(value) || value <= 0 || value > 86_400) {
     throw new RangeError(`${name} must be a number of seconds above 0 and at most 86400, got "${text}"`);
+  }
+  return value * 1000;
+}
+
+/** Like `seconds`, but 0 is allowed (no minimum). */
+function secondsOrZero(env: NodeJS.ProcessEnv, name: string, fallback: number): number {
+  const text = env[name];
+  if (text === undefined) return fallback * 1000;
+  const value = Number(text);
+  if (text.trim() === '' || !Number.isFinite(value) || value < 0 || value > 86_400) {
+    throw new RangeError(`${name} must be a number of seconds from 0 to 86400, got "${text}"`);
   }
   return value * 1000;
 }
@@ -42,5 +56,6 @@ export function readConfig(env: NodeJS.ProcessEnv = process.env): Config {
     clientDir: resolve(env.BAIZE_CLIENT_DIR ?? resolve(ROOT, 'dist/client')),
     seatHoldMs: seconds(env, 'BAIZE_SEAT_HOLD_S', 60),
     pingMs: seconds(env, 'BAIZE_PING_S', 15),
+    ratedMinPlayMs: secondsOrZero(env, 'BAIZE_RATED_MIN_PLAY_S', RATED_MIN_PLAY_MS / 1000),
   };
 }
