@@ -57,11 +57,14 @@ export interface FillStats {
   readonly rooms: number;
   readonly playersSeconds: number;
   readonly matchesSeconds: number;
+  /** Results the store rated (the game's rule and the pairs' daily limit). */
   readonly rated: number;
   /** Records written, by kind (snooker breaks, three-cushion runs, nine-ball break-and-runs). */
   readonly records: Record<string, number>;
-  /** Players with at least one rated match, by kind (the leaderboard's total). */
+  /** Players with at least one rated match, by kind. */
   readonly ratedPlayers: Record<Kind, number>;
+  /** Players on the leaderboard, by kind (established ratings: the leaderboard's total). */
+  readonly ranked: Record<Kind, number>;
   /** Matches per player, over all players (idle ones count as 0). */
   readonly matchesPerPlayer: Quantiles;
   /** Players who never finished a match. */
@@ -244,7 +247,8 @@ export function fill(db: Database, options: FillOptions): FillStats {
         });
         played[a]!++;
         played[b]!++;
-        if (isRated) {
+        // The store may leave it unrated (the pair's daily limit).
+        if (isRated && store.matchResult(matchId)!.rated) {
           rated++;
           ratedIn[k]![a] = 1;
           ratedIn[k]![b] = 1;
@@ -261,6 +265,7 @@ export function fill(db: Database, options: FillOptions): FillStats {
 
   const order = Array.from({ length: n }, (_, i) => i).sort((x, y) => played[y]! - played[x]! || x - y);
   const ratedPlayers = Object.fromEntries(KINDS.map((kind, k) => [kind, ratedIn[k]!.reduce((s, v) => s + v, 0)])) as Record<Kind, number>;
+  const ranked = Object.fromEntries(KINDS.map((kind) => [kind, store.leaderboard(kind, 1, 0).total])) as Record<Kind, number>;
   return {
     players: n,
     matches: m,
@@ -270,6 +275,7 @@ export function fill(db: Database, options: FillOptions): FillStats {
     rated,
     records,
     ratedPlayers,
+    ranked,
     matchesPerPlayer: quantiles(played),
     idlePlayers: played.reduce((s, v) => s + (v === 0 ? 1 : 0), 0),
     busiest: order.slice(0, 100).map((i) => ids[i]!),

@@ -103,7 +103,7 @@ function endpoints(stats: FillStats, r: () => number): Endpoint[] {
   const kind = () => KINDS[Math.floor(r() * KINDS.length)]!;
   /** A page's offset (a multiple of 20) from 0 to `max`. */
   const page = (max: number) => 20 * Math.floor((r() * (max + 20)) / 20);
-  const deepest = Math.max(0, Math.min(10_000, Math.min(...Object.values(stats.ratedPlayers)) - 20));
+  const deepest = Math.max(0, Math.min(10_000, Math.min(...Object.values(stats.ranked)) - 20));
   const deepestRecord = (k: string) => Math.max(0, Math.min(10_000, (stats.records[k] ?? 0) - 20));
   return [
     { name: 'leaderboard, first page (the 4 kinds in turn)', goal: true, path: (i) => `/api/leaderboard?kind=${KINDS[i % KINDS.length]}` },
@@ -195,7 +195,7 @@ try {
   );
   console.log(
     `- matches per player: median ${q.median}, p90 ${q.p90}, p99 ${q.p99}, max ${int(q.max)}; ${int(stats.idlePlayers)} players never finished one\n` +
-      `- rated players (leaderboard size): ${KINDS.map((k) => `${k} ${int(stats.ratedPlayers[k])}`).join(', ')}\n` +
+      `- players on the leaderboard (established: RD under 110): ${KINDS.map((k) => `${k} ${int(stats.ranked[k])}`).join(', ')}; with a rating: ${KINDS.map((k) => `${k} ${int(stats.ratedPlayers[k])}`).join(', ')}\n` +
       `- records: ${Object.entries(stats.records)
         .map(([k, v]) => `${k} ${int(v)}`)
         .join(', ')} (snooker breaks, nine-ball break-and-runs, three-cushion runs: one per player and match at most)\n` +

@@ -45,7 +45,7 @@ export async function startServer(config: Config): Promise<RunningServer> {
   try {
     // The store gives players from before migration 005 their name keys as it opens.
     store = new Store(db);
-    service = new GameService(store, { seatHoldMs: config.seatHoldMs, guestsPerAddress: config.guestsPerAddress, guestKeepMs: config.guestKeepMs });
+    service = new GameService(store, { seatHoldMs: config.seatHoldMs, guestsPerAddress: config.guestsPerAddress, guestKeepMs: config.guestKeepMs, ratedMinPlayMs: config.ratedMinPlayMs });
   } catch (err) {
     db.close();
     throw err;

@@ -2,6 +2,7 @@
 import { fileURLToPath } from 'node:url';
 import { resolve } from 'node:path';
 import { PRACTICE_LIMITS } from './api/rate-limit.ts';
+import { RATED_MIN_PLAY_MS } from './ratings/policy.ts';
 
 export const ROOT = resolve(fileURLToPath(new URL('..', import.meta.url)));
 
@@ -23,6 +24,8 @@ export interface Config {
   readonly practicePerMinute: number;
   /** Practice requests one address (an IPv6 /64) may make a minute. */
   readonly practicePerAddressPerMinute: number;
+  /** Server time from a match's start to its result below which it is not rated (ms; 0: no minimum). */
+  readonly ratedMinPlayMs: number;
 }
 
 function seconds(env: NodeJS.ProcessEnv, name: string, fallback: number): number {
@@ -46,6 +49,17 @@ function count(env: NodeJS.ProcessEnv, name: string, fallback: number, max: numb
   return value;
 }
 
+/** Like `seconds`, but 0 is allowed (no minimum). */
+function secondsOrZero(env: NodeJS.ProcessEnv, name: string, fallback: number): number {
+  const text = env[name];
+  if (text === undefined) return fallback * 1000;
+  const value = Number(text);
+  if (text.trim() === '' || !Number.isFinite(value) || value < 0 || value > 86_400) {
+    throw new RangeError(`${name} must be a number of seconds from 0 to 86400, got "${text}"`);
+  }
+  return value * 1000;
+}
+
 export function readConfig(env: NodeJS.ProcessEnv = process.env): Config {
   const portText = env.PORT ?? '8080';
   const port = Number(portText);
@@ -66,5 +80,6 @@ export function readConfig(env: NodeJS.ProcessEnv = process.env): Config {
     guestKeepMs: count(env, 'BAIZE_GUEST_KEEP_DAYS', 30, 36_500, 'days') * 86_400_000,
     practicePerMinute: count(env, 'BAIZE_PRACTICE_PER_MINUTE', PRACTICE_LIMITS.perPlayer, 1_000_000, 'requests a minute'),
     practicePerAddressPerMinute: count(env, 'BAIZE_PRACTICE_PER_ADDRESS_PER_MINUTE', PRACTICE_LIMITS.perAddress, 1_000_000, 'requests a minute'),
+    ratedMinPlayMs: secondsOrZero(env, 'BAIZE_RATED_MIN_PLAY_S', RATED_MIN_PLAY_MS / 1000),
   };
 }

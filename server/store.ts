@@ -2,7 +2,8 @@
 // Each write that belongs together is one transaction, so a crash leaves either all of it or none.
 import type { Database } from 'better-sqlite3';
 import { nameKeys } from './players/names.ts';
-import { NEW_RATING, rateMatch, type Rating } from './ratings/glicko2.ts';
+import { NEW_RATING, PROVISIONAL_RD, type Rating } from './ratings/glicko2.ts';
+import { ANCHOR_BOARD_SIZE, DAY_MS, RATED_PER_PAIR_PER_DAY, rateResult, type UnratedReason } from './ratings/policy.ts';
 
 export interface PlayerRow {
   readonly id: number;
@@ -62,8 +63,13 @@ export interface MatchResult {
   readonly loser: number;
   readonly how: string;
   readonly scores: string;
-  /** Whether the result moves the ratings (each player took at least two shots). */
+  /**
+   * Whether the game was real enough to move the ratings (the service's rules: shots, time); the
+   * store may still leave it unrated for the pair's daily limit.
+   */
   readonly rated: boolean;
+  /** Why not, when `rated` is false. */
+  readonly unrated?: UnratedReason;
   readonly records: readonly RecordRow[];
 }
 
@@ -131,21 +137,30 @@ export interface MatchRow {
   readonly winner: number | null;
   readonly how: string | null;
   readonly rated: number | null;
+  readonly unrated: UnratedReason | null;
 }
 
 const MATCH_COLUMNS = `m.id, m.kind, m.race_to AS raceTo, m.player1, p1.name AS name1, m.player2, p2.name AS name2,
-  m.started_at AS startedAt, m.finished_at AS finishedAt, r.winner, r.how, r.rated
+  m.started_at AS startedAt, m.finished_at AS finishedAt, r.winner, r.how, r.rated, r.unrated
   FROM matches m JOIN players p1 ON p1.id = m.player1 JOIN players p2 ON p2.id = m.player2 LEFT JOIN results r ON r.match_id = m.id`;
 
 const RECORD_COLUMNS = `rec.id, rec.kind, rec.what, rec.player_id AS playerId, p.name, rec.value, rec.match_id AS matchId,
   rec.practice_id AS practiceId, rec.created_at AS createdAt FROM records rec JOIN players p ON p.id = rec.player_id`;
 
+/**
+ * Established (not provisional) ratings: the leaderboard's, read through the partial index
+ * ratings_board (migrations/008). INDEXED BY makes a bound that disagrees with the index's fail
+ * when the statements are prepared, instead of quietly reading the whole table.
+ */
+const ESTABLISHED = `rd < ${PROVISIONAL_RD}`;
+const BOARD = 'INDEXED BY ratings_board';
+
 export class Store {
   private readonly s;
-  /** Rated players per kind, counted once and forgotten when a rating is added. */
-  private readonly ratedCount = new Map<string, number>();
   /** When expired practice seeds were last deleted. */
   private seedsSweptAt = -Infinity;
+  /** Players on the leaderboard per kind, counted once and forgotten when a rating changes. */
+  private readonly boardCount = new Map<string, number>();
 
   constructor(
     private readonly db: Database,
@@ -192,9 +207,19 @@ export class Store {
         `SELECT json_extract(action, '$.player') AS player, count(*) AS n FROM match_actions
          WHERE match_id = ? AND json_extract(action, '$.type') = 'shot' GROUP BY 1`,
       ),
-      insertResult: db.prepare<[number, number, number, string, string, number, number]>(
-        'INSERT OR IGNORE INTO results (match_id, winner, loser, how, scores, rated, finished_at) VALUES (?, ?, ?, ?, ?, ?, ?)',
+      insertResult: db.prepare<[number, number, number, string, string, number, string | null, number]>(
+        'INSERT OR IGNORE INTO results (match_id, winner, loser, how, scores, rated, unrated, finished_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?)',
       ),
+      matchStart: db.prepare<[number], { startedAt: number }>('SELECT started_at AS startedAt FROM matches WHERE id = ?'),
+      // Rated results of a kind between two players since a time: two seeks of results_pair, then
+      // each match found looked up for its kind (the daily limit keeps them few).
+      pairRated: db.prepare<[{ a: number; b: number; kind: string; since: number }], { n: number }>(
+        `SELECT count(*) AS n FROM matches WHERE kind = @kind AND id IN (
+           SELECT match_id FROM results WHERE rated = 1 AND winner = @a AND loser = @b AND finished_at > @since
+           UNION ALL SELECT match_id FROM results WHERE rated = 1 AND winner = @b AND loser = @a AND finished_at > @since)`,
+      ),
+      // Whether a kind's board holds ANCHOR_BOARD_SIZE players: at most that many index entries read.
+      anchored: db.prepare<[string, number], { n: number }>(`SELECT count(*) AS n FROM (SELECT 1 FROM ratings ${BOARD} WHERE kind = ? AND ${ESTABLISHED} LIMIT ?)`),
       rating: db.prepare<[string, number], Rating & { games: number; wins: number }>('SELECT rating, rd, vol, games, wins FROM ratings WHERE kind = ? AND player_id = ?'),
       upsertRating: db.prepare<[string, number, number, number, number, number, number, number]>(
         `INSERT INTO ratings (kind, player_id, rating, rd, vol, games, wins, updated_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?)
@@ -205,17 +230,20 @@ export class Store {
         'INSERT INTO records (kind, what, player_id, value, better, match_id, practice_id, created_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?)',
       ),
       finishMatch: db.prepare<[number, number]>('UPDATE matches SET finished_at = ? WHERE id = ? AND finished_at IS NULL'),
-      result: db.prepare<[number], { winner: number; loser: number; how: string; scores: string; rated: number }>('SELECT winner, loser, how, scores, rated FROM results WHERE match_id = ?'),
+      result: db.prepare<[number], { winner: number; loser: number; how: string; scores: string; rated: number; unrated: UnratedReason | null }>(
+        'SELECT winner, loser, how, scores, rated, unrated FROM results WHERE match_id = ?',
+      ),
       resultCount: db.prepare<[], { n: number }>('SELECT count(*) AS n FROM results'),
-      // The page is cut from the covering index ratings_board first, so that an OFFSET skips index
-      // entries only, not a rating row and a player row for each place skipped.
+      // The page is cut from the covering partial index ratings_board first, so that an OFFSET
+      // skips index entries only, not a rating row and a player row for each place skipped, and
+      // provisional ratings are not there to skip.
       board: db.prepare<[string, number, number], BoardRow>(
         `SELECT r.player_id AS id, p.name, r.rating, r.rd, r.games, r.wins
-         FROM (SELECT kind, player_id FROM ratings WHERE kind = ? ORDER BY rating DESC, player_id LIMIT ? OFFSET ?) page
+         FROM (SELECT kind, player_id FROM ratings ${BOARD} WHERE kind = ? AND ${ESTABLISHED} ORDER BY rating DESC, player_id LIMIT ? OFFSET ?) page
          JOIN ratings r ON r.kind = page.kind AND r.player_id = page.player_id JOIN players p ON p.id = r.player_id
          ORDER BY r.rating DESC, r.player_id`,
       ),
-      boardCount: db.prepare<[string], { n: number }>('SELECT count(*) AS n FROM ratings WHERE kind = ?'),
+      boardCount: db.prepare<[string], { n: number }>(`SELECT count(*) AS n FROM ratings ${BOARD} WHERE kind = ? AND ${ESTABLISHED}`),
       ratingsOf: db.prepare<[number], { kind: string } & BoardRow>(
         'SELECT kind, player_id AS id, \'\' AS name, rating, rd, games, wins FROM ratings WHERE player_id = ? ORDER BY kind',
       ),
@@ -386,19 +414,23 @@ export class Store {
 
   /**
    * A match's result, its ratings and its records: written once, inside the caller's transaction.
-   * A retried finish finds the result there and adds nothing.
+   * A retried finish finds the result there and adds nothing. The pair's daily limit is decided
+   * here, in the transaction that writes the result, so that it holds however results interleave.
    */
   private finish(r: MatchResult, now: number): void {
-    const inserted = this.s.insertResult.run(r.matchId, r.winner, r.loser, r.how, r.scores, r.rated ? 1 : 0, now).changes === 1;
+    let unrated = r.rated ? null : (r.unrated ?? 'few-shots');
+    if (unrated === null && this.s.pairRated.get({ a: r.winner, b: r.loser, kind: r.kind, since: now - DAY_MS })!.n >= RATED_PER_PAIR_PER_DAY) unrated = 'pair-limit';
+    const inserted = this.s.insertResult.run(r.matchId, r.winner, r.loser, r.how, r.scores, unrated === null ? 1 : 0, unrated, now).changes === 1;
     if (!inserted) return;
     this.s.finishMatch.run(now, r.matchId);
-    if (r.rated) {
+    if (unrated === null) {
       const w = this.s.rating.get(r.kind, r.winner);
       const l = this.s.rating.get(r.kind, r.loser);
-      const next = rateMatch(w ?? NEW_RATING, l ?? NEW_RATING);
+      const anchored = this.s.anchored.get(r.kind, ANCHOR_BOARD_SIZE)!.n >= ANCHOR_BOARD_SIZE;
+      const next = rateResult(w ?? NEW_RATING, l ?? NEW_RATING, anchored);
       this.s.upsertRating.run(r.kind, r.winner, next.winner.rating, next.winner.rd, next.winner.vol, (w?.games ?? 0) + 1, (w?.wins ?? 0) + 1, now);
       this.s.upsertRating.run(r.kind, r.loser, next.loser.rating, next.loser.rd, next.loser.vol, (l?.games ?? 0) + 1, l?.wins ?? 0, now);
-      this.ratedCount.delete(r.kind);
+      this.boardCount.delete(r.kind);
     }
     for (const rec of r.records) this.s.insertRecord.run(r.kind, rec.what, rec.player, rec.value, rec.better, r.matchId, null, now);
   }
@@ -426,17 +458,25 @@ export class Store {
     return new Map(this.s.shotCounts.all(matchId).map((r) => [String(r.player), r.n]));
   }
 
-  matchResult(matchId: number): { winner: number; loser: number; how: string; scores: unknown; rated: boolean } | undefined {
+  /** When a match started (ms since the epoch, the server's clock). */
+  matchStartedAt(matchId: number): number | undefined {
+    return this.s.matchStart.get(matchId)?.startedAt;
+  }
+
+  matchResult(matchId: number): { winner: number; loser: number; how: string; scores: unknown; rated: boolean; unrated: UnratedReason | null } | undefined {
     const r = this.s.result.get(matchId);
     return r && { ...r, scores: JSON.parse(r.scores) as unknown, rated: r.rated === 1 };
   }
 
-  /** A page of the leaderboard of a kind, best first, and how many players it has. */
+  /**
+   * A page of the leaderboard of a kind, best first, and how many players it has: established
+   * ratings only (RD under PROVISIONAL_RD), ranked among themselves.
+   */
   leaderboard(kind: string, limit: number, offset: number): { total: number; rows: BoardRow[] } {
-    let total = this.ratedCount.get(kind);
+    let total = this.boardCount.get(kind);
     if (total === undefined) {
       total = this.s.boardCount.get(kind)!.n;
-      this.ratedCount.set(kind, total);
+      this.boardCount.set(kind, total);
     }
     return { total, rows: this.s.board.all(kind, limit, offset) };
   }

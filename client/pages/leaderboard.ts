@@ -5,7 +5,7 @@ import { api } from '../net/api.ts';
 
 interface Board {
   total: number;
-  entries: { rank: number; player: { id: string; name: string }; rating: number; rd: number; games: number; wins: number; provisional: boolean }[];
+  entries: { rank: number; player: { id: string; name: string }; rating: number; rd: number; games: number; wins: number }[];
 }
 
 interface Records {
@@ -89,10 +89,11 @@ export function mountLeaderboard(root: HTMLElement): () => void {
         if (!live) return;
         body.replaceChildren(
           ...b.entries.map((e) =>
-            h('tr', {}, h('td', {}, e.rank), h('td', {}, link(`/player/${e.player.id}`, e.player.name), e.provisional ? ' ?' : ''), h('td', {}, Math.round(e.rating)), h('td', {}, Math.round(e.rd)), h('td', {}, e.games), h('td', {}, e.wins)),
+            h('tr', {}, h('td', {}, e.rank), h('td', {}, link(`/player/${e.player.id}`, e.player.name)), h('td', {}, Math.round(e.rating)), h('td', {}, Math.round(e.rd)), h('td', {}, e.games), h('td', {}, e.wins)),
           ),
         );
-        info.textContent = b.total === 0 ? 'No rated games yet.' : `${b.total} rated players; ? marks a provisional rating.`;
+        // Provisional ratings (RD 110 or more) are not listed: a player's own page shows theirs.
+        info.textContent = `${b.total === 0 ? 'Nobody is ranked yet' : `${b.total} ranked players`}: a player is listed once their rating is established (RD under 110).`;
         prev.disabled = o === 0;
         next.disabled = o + 20 >= b.total;
       },

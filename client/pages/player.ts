@@ -57,7 +57,7 @@ export function mountPlayer(root: HTMLElement, _ctx: unknown, id: string): () =>
       section.replaceChildren(
         h('h2', {}, p.name),
         h('p', {}, `${p.games} rated games, ${p.wins} won.`),
-        h('ul', { 'aria-label': 'Ratings' }, ...Object.entries(p.ratings).map(([k, r]) => h('li', {}, `${KIND_NAMES[k] ?? k}: ${Math.round(r.rating)}${r.provisional ? '?' : ''} (RD ${Math.round(r.rd)}), ${r.games} games, ${r.wins} won`))),
+        h('ul', { 'aria-label': 'Ratings' }, ...Object.entries(p.ratings).map(([k, r]) => h('li', {}, `${KIND_NAMES[k] ?? k}: ${Math.round(r.rating)}${r.provisional ? '? (provisional, ' : ' ('}RD ${Math.round(r.rd)}), ${r.games} games, ${r.wins} won`))),
         h('h3', {}, 'Records'),
         h('ul', { 'aria-label': 'Records' }, ...p.records.map((r) => h('li', {}, `${KIND_NAMES[r.kind] ?? r.kind}: ${r.what} ${r.value}${r.practice ? ' (practice)' : ''}`, r.match ? h('span', {}, ' · ', link(`/match/${r.match}`, 'replay')) : ''))),
         h('h3', {}, 'Recent matches'),

@@ -121,7 +121,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
       const winner = room.winner ? nameOf(room.winner) : 'Nobody';
       const said = g?.verdict ? words(g.verdict.message) : '';
       const end = said.includes(winner) && / wins\b/.test(said) ? said : `${winner} wins. ${said}`.trim();
-      verdict.textContent = `${/[.!?]$/.test(end) ? end : `${end}.`}${room.rated === false ? ' Not rated: each player must take at least two shots.' : ''}`;
+      verdict.textContent = `${/[.!?]$/.test(end) ? end : `${end}.`}${room.rated === false ? (room.unrated ? ` Not rated: ${room.unrated}.` : ' Not rated.') : ''}`;
     }
     actions.replaceChildren();
     if (room.status === 'waiting' && !seated()) actions.append(h('button', { type: 'button', onclick: () => void session.request({ type: 'join', room: id }) }, 'Join'));

@@ -28,7 +28,7 @@ function matchSummary(m: MatchRow): Json {
       { id: String(m.player2), name: m.name2 },
     ],
     status: m.finishedAt === null ? 'playing' : 'over',
-    result: m.winner === null ? null : { winner: String(m.winner), reason: m.how, rated: m.rated === 1 },
+    result: m.winner === null ? null : { winner: String(m.winner), reason: m.how, rated: m.rated === 1, ...(m.unrated === null ? {} : { unrated: m.unrated }) },
     startedAt: m.startedAt,
     finishedAt: m.finishedAt,
   };
@@ -123,6 +123,7 @@ export class Api {
         rd: round(r.rd),
         games: r.games,
         wins: r.wins,
+        // Always false: the board lists established ratings only (kept for the clients that read it).
         provisional: r.rd >= PROVISIONAL_RD,
       })),
     };

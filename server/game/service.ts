@@ -6,6 +6,7 @@ import { randomBytes } from 'node:crypto';
 import type { ClientMessage, PlayerRef, ServerMessage } from '../../shared/protocol/index.ts';
 import { MAX_OPEN_ROOMS_PER_PLAYER } from '../../shared/protocol/index.ts';
 import { claimGame, concede, decide, EMPTY_TALLY, placeCueBall, playShot, shotClockExpired, tallied, type Game, type MatchAction } from '../../shared/rules/index.ts';
+import { RATED_MIN_PLAY_MS, RATED_MIN_SHOTS, unratedSentence, type UnratedReason } from '../ratings/policy.ts';
 import type { MatchResult, RoomChange, Store } from '../store.ts';
 import { guestName, nameProblem, normalizeName } from '../players/names.ts';
 import { hashToken, newToken } from '../tokens.ts';
@@ -24,6 +25,8 @@ export interface Delivery {
 export interface ServiceOptions {
   /** How long a dropped player's seat is held before the opponent may claim the game (ms). */
   readonly seatHoldMs: number;
+  /** Server time from a match's start to its result below which it is not rated (ms; default RATED_MIN_PLAY_MS). */
+  readonly ratedMinPlayMs?: number;
   readonly now?: () => number;
   /** Where internal errors are reported. */
   readonly log?: (line: string) => void;
@@ -562,12 +565,20 @@ export class GameService {
     };
   }
 
-  /** A finished match's result: rated when each player took at least two shots, with the records its tally holds. */
+  /**
+   * A finished match's result, with the records its tally holds. Rated only after a real game:
+   * each player took RATED_MIN_SHOTS shots, and the server's clock ran the minimum time of play
+   * between the start and the result (the store adds the pair's daily limit).
+   */
   private result(s: RoomState, last: MatchAction): MatchResult {
     const matchId = s.matchId!;
     const shots = this.store.shotCounts(matchId);
     if (last.type === 'shot') shots.set(last.player, (shots.get(last.player) ?? 0) + 1);
     const loser = s.order.find((p) => p !== s.winner)!;
+    const startedAt = this.store.matchStartedAt(matchId) ?? this.now();
+    let unrated: UnratedReason | undefined;
+    if (!s.order.every((p) => (shots.get(p) ?? 0) >= RATED_MIN_SHOTS)) unrated = 'few-shots';
+    else if (this.now() - startedAt < this.minPlayMs) unrated = 'too-short';
     return {
       matchId,
       kind: s.kind,
@@ -575,7 +586,8 @@ export class GameService {
       loser: Number(loser),
       how: s.how ?? 'played',
       scores: JSON.stringify(scoresOf(s)),
-      rated: s.order.every((p) => (shots.get(p) ?? 0) >= 2),
+      rated: unrated === undefined,
+      ...(unrated === undefined ? {} : { unrated }),
       records: tallied(s.kind, s.tally).map((a) => ({ what: a.what, player: Number(a.player), value: a.value, better: a.what === 'break-and-run' ? -a.value : a.value })),
     };
   }
@@ -641,7 +653,12 @@ export class GameService {
     });
     const s = room.state;
     const result = s.status === 'over' && s.matchId !== null ? this.store.matchResult(s.matchId) : undefined;
-    return result === undefined ? view : { ...view, rated: result.rated };
+    if (result === undefined) return view;
+    return result.unrated === null ? { ...view, rated: result.rated } : { ...view, rated: result.rated, unrated: unratedSentence(result.unrated, this.minPlayMs) };
+  }
+
+  private get minPlayMs(): number {
+    return this.options.ratedMinPlayMs ?? RATED_MIN_PLAY_MS;
   }
 
   /** `room` to everyone there; the one who asked gets it with `re`. */

@@ -10,7 +10,10 @@ export interface Rating {
 
 /** A new player's rating: 1500, RD 350, volatility 0.06 (Glickman's defaults). */
 export const NEW_RATING: Rating = { rating: 1500, rd: 350, vol: 0.06 };
-/** RD at or above which a rating is provisional (as lichess does). */
+/**
+ * RD at or above which a rating is provisional (as lichess does) and off the leaderboard. The
+ * partial index ratings_board (migrations/008) spells the same bound: change both together.
+ */
 export const PROVISIONAL_RD = 110;
 /** The system constant τ, which limits how fast the volatility moves (Glickman suggests 0.3-1.2). */
 export const TAU = 0.5;

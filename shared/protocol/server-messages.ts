@@ -43,8 +43,10 @@ export interface RoomView {
   readonly rematch?: readonly string[];
   /** The winner, once over. */
   readonly winner?: string | null;
-  /** Once over: whether the match counts for the ratings (each player took at least two shots). */
+  /** Once over: whether the match counts for the ratings (docs/api.md, "Ratings"). */
   readonly rated?: boolean;
+  /** Once over and not rated: why, as words that finish "Not rated: ..." (e.g. "each player must take at least 3 shots"). */
+  readonly unrated?: string;
 }
 
 export interface LobbyRoom {

@@ -127,7 +127,7 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
     await b.getByRole('button', { name: 'Really concede? Click again' }).click();
     const said = a.getByRole('status', { name: 'Referee' });
     // (One shot each at most: the match does not count for the ratings, and the page says so.)
-    await expect.poll(() => said.textContent(), { timeout: 10_000 }).toMatch(/concedes; .+ wins\. Not rated: each player must take at least two shots\.$/);
+    await expect.poll(() => said.textContent(), { timeout: 10_000 }).toMatch(/concedes; .+ wins\. Not rated: each player must take at least 3 shots\.$/);
     expect((await said.textContent())!.match(/wins/g)).toHaveLength(1);
     // A rematch asked for by one is shown to the other.
     await b.getByRole('button', { name: 'Rematch' }).click();

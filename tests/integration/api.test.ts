@@ -6,17 +6,33 @@ import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { chooseShot } from '../../bots/strategy.ts';
 import { simulate } from '../../shared/physics/index.ts';
-import { playShot, practiceRun, practiceStart, type Game, type PracticeKind, type PracticeShot } from '../../shared/rules/index.ts';
+import { openDatabase } from '../../server/database.ts';
+import { Store } from '../../server/store.ts';
+import { hashToken } from '../../server/tokens.ts';
+import { newGame, playShot, practiceRun, practiceStart, PRACTICE_OPPONENT, type Game, type PracticeKind, type PracticeShot } from '../../shared/rules/index.ts';
 import { ask, connect, playTurn, until, wsUrl, type Seat } from '../support/game-clients.ts';
-import { startServerProcess, tempDir, type ServerProcess } from '../support/server-process.ts';
+import { ROOT, startServerProcess, tempDir, type ServerProcess } from '../support/server-process.ts';
 
 let server: ServerProcess;
 let url: string;
 const seats: Seat[] = [];
+/** Tokens of two players whose eight-ball ratings are established before the server starts. */
+const SEEDED = { 'Rated-A': 'seeded-token-a', 'Rated-B': 'seeded-token-b' };
 
 beforeAll(async () => {
-  // Practice limits these tests never meet (practice.test.ts tests them).
-  server = await startServerProcess({ BAIZE_DB: join(tempDir(), 'baize.db'), BAIZE_PRACTICE_PER_MINUTE: '100000', BAIZE_PRACTICE_PER_ADDRESS_PER_MINUTE: '100000' });
+  const path = join(tempDir(), 'baize.db');
+  // Two players with established eight-ball ratings (1500, RD 80 after 20 games), as if they had
+  // played their way onto the board: a board of real games takes far more than a test plays.
+  const { db } = openDatabase(path, join(ROOT, 'migrations'));
+  const store = new Store(db);
+  for (const [name, token] of Object.entries(SEEDED)) {
+    const p = store.createPlayer(name, hashToken(token));
+    db.prepare("INSERT INTO ratings (kind, player_id, rating, rd, vol, games, wins, updated_at) VALUES ('eightball', ?, 1500, 80, 0.06, 20, 10, 0)").run(p.id);
+  }
+  db.close();
+  // No minimum time of play: these matches take milliseconds (the rule's own test moves a clock).
+  // Practice limits these tests never meet either (practice.test.ts tests them).
+  server = await startServerProcess({ BAIZE_DB: path, BAIZE_RATED_MIN_PLAY_S: '0', BAIZE_PRACTICE_PER_MINUTE: '100000', BAIZE_PRACTICE_PER_ADDRESS_PER_MINUTE: '100000' });
   url = wsUrl(server.url);
 });
 afterAll(async () => {
@@ -42,18 +58,19 @@ async function issued(p: Seat, kind: PracticeKind): Promise<number> {
 }
 
 async function player(name: string): Promise<Seat> {
-  const s = await connect(url, { name });
+  const s = await connect(url, name in SEEDED ? { token: SEEDED[name as keyof typeof SEEDED] } : { name });
   seats.push(s);
   return s;
 }
 
 /**
- * A nine-ball match between a and b. With `fouls`, each player in turn strokes the cue ball a few
- * centimetres into nothing (a foul: the turn passes) until each has played that many, then `loser`
- * concedes; without, the sound bots play it to its end.
+ * A match between a and b. With `fouls`, an eight-ball match where each player in turn strokes the
+ * cue ball a few centimetres into nothing (a foul: the turn passes; in nine-ball the third in a
+ * row would lose the rack) until each has played that many, then `loser` concedes; without, a
+ * nine-ball match the sound bots play to its end.
  */
 async function match(a: Seat, b: Seat, loser: Seat, fouls?: number): Promise<number> {
-  const created = await ask(a, { type: 'create', kind: 'nineball' });
+  const created = await ask(a, { type: 'create', kind: fouls === undefined ? 'nineball' : 'eightball' });
   if (created.type !== 'room') throw new Error(JSON.stringify(created));
   const room = created.room.id;
   await ask(b, { type: 'join', room });
@@ -116,33 +133,44 @@ function scoringRun(kind: PracticeKind, playerId: string, seed: number, max = 8)
 }
 
 describe('the HTTP API', () => {
-  it('rates every finished match once: the winner climbs above the loser, and a series adds up', async () => {
+  it('rates real games once, ranks established players only, and limits the rated games of a pair a day', async () => {
     const a = await player('Rated-A');
     const b = await player('Rated-B');
     const ids: number[] = [];
-    for (let i = 0; i < 3; i++) ids.push(await match(a, b, b, 2));
-    const board = await get('/api/leaderboard?kind=nineball');
+    for (let i = 0; i < 3; i++) ids.push(await match(a, b, b, 3));
+    const board = await get('/api/leaderboard?kind=eightball');
     expect(board.status).toBe(200);
-    const entryA = board.body.entries.find((e: any) => e.player.id === a.player.id);
-    const entryB = board.body.entries.find((e: any) => e.player.id === b.player.id);
-    expect(entryA.rank).toBeLessThan(entryB.rank);
+    expect(board.body.total).toBe(2);
+    const [entryA, entryB] = board.body.entries;
+    expect(entryA).toMatchObject({ rank: 1, player: a.player, games: 23, wins: 13, provisional: false });
+    expect(entryB).toMatchObject({ rank: 2, player: b.player, games: 23, wins: 10, provisional: false });
     expect(entryA.rating).toBeGreaterThan(1500);
     expect(entryB.rating).toBeLessThan(1500);
-    expect(entryA).toMatchObject({ games: 3, wins: 3, provisional: true });
-    expect(entryB).toMatchObject({ games: 3, wins: 0 });
-    expect(board.body.total).toBeGreaterThanOrEqual(2);
     // Each result moved the ratings: three matches, all rated, newest first.
-    const list = await get(`/api/matches?player=${a.player.id}&kind=nineball`);
+    const list = await get(`/api/matches?player=${a.player.id}&kind=eightball`);
     expect(list.body.matches.map((m: any) => m.id)).toEqual([...ids].reverse());
-    for (const m of list.body.matches) expect(m.result).toMatchObject({ winner: a.player.id, rated: true });
+    for (const m of list.body.matches) expect(m.result).toEqual({ winner: a.player.id, reason: 'concession', rated: true });
     const page = await get(`/api/players/${a.player.id}`);
-    expect(page.body).toMatchObject({ id: a.player.id, name: 'Rated-A', games: 3, wins: 3, ratings: { nineball: { games: 3, wins: 3 } } });
+    expect(page.body).toMatchObject({ id: a.player.id, name: 'Rated-A', games: 23, wins: 13, ratings: { eightball: { games: 23, wins: 13, provisional: false } } });
     expect(page.body.recent).toHaveLength(3);
-    // A match conceded at once is not rated.
+    // A fourth real game of the pair within 24 hours is played and kept, but not rated.
+    const fourth = await match(a, b, b, 3);
+    expect((await get(`/api/matches/${fourth}`)).body.result).toEqual({ winner: a.player.id, reason: 'concession', rated: false, unrated: 'pair-limit' });
+    expect([...a.rooms.values()].at(-1)!.view).toMatchObject({ rated: false, unrated: 'at most 3 rated matches of a kind between the same two players in 24 hours' });
+    // A newcomer's real win is rated: their own page shows the rating, marked provisional; the
+    // board does not list it.
     const c = await player('Rated-C');
-    await match(c, b, c, 1);
-    const after = await get(`/api/players/${b.player.id}`);
-    expect(after.body.ratings.nineball.games).toBe(3);
+    await match(c, b, b, 3);
+    const newcomer = await get(`/api/players/${c.player.id}`);
+    expect(newcomer.body.ratings.eightball).toMatchObject({ games: 1, wins: 1, provisional: true });
+    expect(newcomer.body.ratings.eightball.rating).toBeGreaterThan(1500);
+    const after = await get('/api/leaderboard?kind=eightball');
+    expect(after.body.total).toBe(2);
+    expect(after.body.entries.map((e: any) => e.player.id)).toEqual([a.player.id, b.player.id]);
+    // A match conceded after one shot each is not rated.
+    const quick = await match(c, b, c, 1);
+    expect((await get(`/api/matches/${quick}`)).body.result).toMatchObject({ rated: false, unrated: 'few-shots' });
+    expect((await get(`/api/players/${c.player.id}`)).body.ratings.eightball.games).toBe(1);
   }, 120_000);
 
   it('serves each match as a record that replays to what the server broadcast', async () => {

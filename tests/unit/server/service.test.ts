@@ -211,25 +211,35 @@ describe('the game service', () => {
     expect(h.store.resultCount()).toBe(1);
   });
 
-  it('says once a match is over whether it counts for the ratings: each player took two shots', () => {
+  it('says once a match is over whether it counts for the ratings, and why not: a real game of 3 shots each and a minute', () => {
     h = openHarness();
-    let room = table(h);
+    // Eight-ball: a stroke into nothing is a foul but, unlike nine-ball's third, never loses the rack.
+    let room = table(h, 'eightball');
     h.send(1, { type: 'concede', room: room.id });
-    expect(last(h, 2, 'room').room).toMatchObject({ status: 'over', rated: false });
-    h.close();
-    h = openHarness();
-    room = table(h);
+    expect(last(h, 2, 'room').room).toMatchObject({ status: 'over', rated: false, unrated: 'each player must take at least 3 shots' });
     const soft = { ball: 'cue', heading: Math.PI, speed: 0.05, side: 0, top: 0 };
-    let state = { stateId: room.stateId, turn: room.game!.turn };
-    for (let k = 0; k < 4; k++) {
-      const conn = state.turn === room.players[0]!.id ? 1 : 2;
-      const got = h.send(conn, { type: 'shot', room: room.id, stateId: state.stateId, shot: soft }).get(conn)!;
-      const m = got.find((x) => x.type === 'shot') as Extract<ServerMessage, { type: 'shot' }>;
-      state = { stateId: m.stateId, turn: m.game.turn };
-    }
-    expect(last(h, 1, 'room').room.rated).toBeUndefined(); // not over yet
-    h.send(2, { type: 'concede', room: room.id });
-    expect(last(h, 1, 'room').room).toMatchObject({ status: 'over', rated: true });
+    /** A new table where the players stroke the cue ball into nothing `shots` times in turn, `wait` ms after the start; then Bob concedes. */
+    const play = (shots: number, wait: number) => {
+      h.close();
+      h = openHarness();
+      room = table(h, 'eightball');
+      let state = { stateId: room.stateId, turn: room.game!.turn };
+      for (let k = 0; k < shots; k++) {
+        const conn = state.turn === room.players[0]!.id ? 1 : 2;
+        const got = h.send(conn, { type: 'shot', room: room.id, stateId: state.stateId, shot: soft }).get(conn)!;
+        const m = got.find((x) => x.type === 'shot') as Extract<ServerMessage, { type: 'shot' }>;
+        state = { stateId: m.stateId, turn: m.game.turn };
+      }
+      h.clock += wait;
+      expect(last(h, 1, 'room').room.rated).toBeUndefined(); // not over yet
+      h.send(2, { type: 'concede', room: room.id });
+      return last(h, 1, 'room').room;
+    };
+    expect(play(5, 60_000)).toMatchObject({ status: 'over', rated: false, unrated: 'each player must take at least 3 shots' });
+    expect(play(6, 59_999)).toMatchObject({ status: 'over', rated: false, unrated: 'a rated match lasts at least 60 s' });
+    const rated = play(6, 60_000);
+    expect(rated).toMatchObject({ status: 'over', rated: true });
+    expect(rated.unrated).toBeUndefined();
   });
 
   it('gives a rematch in the same room when both ask, the other player breaking', () => {
