@@ -74,8 +74,9 @@ describe('migrations', () => {
   });
 
   it('reject gaps, repeats and badly named files before applying anything', () => {
-    const gap = migrationsWith({ '009_far.sql': 'SELECT 1;' });
-    expect(() => listMigrations(gap)).toThrow(/009_far\.sql.*expected number/);
+    const far = `${String(LATEST + 2).padStart(3, '0')}_far.sql`;
+    const gap = migrationsWith({ [far]: 'SELECT 1;' });
+    expect(() => listMigrations(gap)).toThrow(new RegExp(`${far.replace('.', '\\.')}.*expected number`));
     const badName = migrationsWith({ 'Add Things.sql': 'SELECT 1;' });
     expect(() => listMigrations(badName)).toThrow(/Add Things\.sql.*NNN_name\.sql/);
     const db = new Database(':memory:');
