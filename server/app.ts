@@ -12,6 +12,7 @@ import { MAX_FRAME_BYTES } from '../shared/protocol/index.ts';
 import { GameService } from './game/service.ts';
 import { Store } from './store.ts';
 import { Api } from './api/routes.ts';
+import { AddressCap } from './ws/address.ts';
 import { bindWebSocket } from './ws/binding.ts';
 
 export interface RunningServer {
@@ -39,13 +40,19 @@ export async function startServer(config: Config): Promise<RunningServer> {
   let service: GameService;
   const store = new Store(db);
   try {
-    service = new GameService(store, { seatHoldMs: config.seatHoldMs });
+    service = new GameService(store, { seatHoldMs: config.seatHoldMs, maxTabsPerPlayer: config.maxTabsPerPlayer });
   } catch (err) {
     db.close();
     throw err;
   }
   const files = loadStaticFiles(config.clientDir);
-  const http = createServer(createRequestHandler(files, () => ({ ok: db.open, version: VERSION, schema: schemaVersion(db) }), new Api(store)));
+  const handler = createRequestHandler(files, () => ({ ok: db.open, version: VERSION, schema: schemaVersion(db) }), new Api(store));
+  // Slow requests hold a socket each: headers and whole requests have deadlines (answered 408),
+  // checked every second rather than Node's default 30 s.
+  const http = createServer(
+    { headersTimeout: config.headersTimeoutMs, requestTimeout: config.requestTimeoutMs, connectionsCheckingInterval: Math.min(1000, config.headersTimeoutMs) },
+    handler,
+  );
   try {
     await new Promise<void>((resolve, reject) => {
       const onError = (err: NodeJS.ErrnoException) => {
@@ -63,8 +70,15 @@ export async function startServer(config: Config): Promise<RunningServer> {
   }
 
   // Attached only once listening: a WebSocketServer re-emits its HTTP server's errors.
-  const wss = new WebSocketServer({ server: http, path: '/ws', maxPayload: MAX_MESSAGE_BYTES, perMessageDeflate: false });
-  const binding = bindWebSocket(wss, service, { pingMs: config.pingMs, tickMs: 250 });
+  const perAddress = new AddressCap(config.maxSocketsPerAddress);
+  const wss = new WebSocketServer({ server: http, path: '/ws', maxPayload: MAX_MESSAGE_BYTES, perMessageDeflate: false, verifyClient: perAddress.verify });
+  const binding = bindWebSocket(wss, service, {
+    pingMs: config.pingMs,
+    tickMs: 250,
+    helloMs: config.helloMs,
+    perAddress,
+    maxBufferedBytes: config.maxBufferedBytes,
+  });
 
   const { port } = http.address() as AddressInfo;
   const hostInUrl = config.host.includes(':') ? `[${config.host}]` : config.host;

@@ -6,7 +6,7 @@ import { PRACTICE_KINDS } from '../../shared/rules/index.ts';
 
 export class ApiError extends Error {
   constructor(
-    readonly status: 400 | 404 | 405 | 413,
+    readonly status: 400 | 404 | 405 | 408 | 413,
     readonly error: string,
     message: string,
   ) {

@@ -29,7 +29,8 @@ export function tempDir(prefix = 'baize-test-'): string {
 function launch(env: Record<string, string>): { child: ChildProcess; out: string[]; err: string[]; exited: Promise<number | null> } {
   const child = spawn(process.execPath, ['--import', 'tsx', 'server/main.ts'], {
     cwd: ROOT,
-    env: { ...process.env, HOST: '127.0.0.1', PORT: '0', ...env },
+    // Every test connects from 127.0.0.1: the per-address cap is generous unless a test sets it.
+    env: { ...process.env, HOST: '127.0.0.1', PORT: '0', BAIZE_MAX_SOCKETS_PER_ADDRESS: '100000', ...env },
     stdio: ['ignore', 'pipe', 'pipe'],
   });
   const out: string[] = [];
