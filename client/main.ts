@@ -65,5 +65,7 @@ session.onStatus((s) => {
 });
 session.onMessage((m) => {
   if (m.type === 'player' && session.status === 'online') status.textContent = `Playing as ${m.player.name}`;
+  // A hello the server refused (say, too many tabs open): its reason, until the next try.
+  if (m.type === 'error' && m.re === 'hello' && m.code !== 'bad-token') status.textContent = m.message;
 });
 route();

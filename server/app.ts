@@ -13,6 +13,7 @@ import { MAX_FRAME_BYTES } from '../shared/protocol/index.ts';
 import { GameService } from './game/service.ts';
 import { Store } from './store.ts';
 import { Api } from './api/routes.ts';
+import { AddressCap } from './ws/address.ts';
 import { bindWebSocket } from './ws/binding.ts';
 
 export interface RunningServer {
@@ -43,9 +44,9 @@ export async function startServer(config: Config): Promise<RunningServer> {
   let service: GameService;
   let store: Store;
   try {
-    // The store gives players from before migration 005 their name keys as it opens.
+    // The store gives players from before migration 006 their name keys as it opens.
     store = new Store(db);
-    service = new GameService(store, { seatHoldMs: config.seatHoldMs, guestsPerAddress: config.guestsPerAddress, guestKeepMs: config.guestKeepMs, ratedMinPlayMs: config.ratedMinPlayMs });
+    service = new GameService(store, { seatHoldMs: config.seatHoldMs, guestsPerAddress: config.guestsPerAddress, guestKeepMs: config.guestKeepMs, ratedMinPlayMs: config.ratedMinPlayMs, maxTabsPerPlayer: config.maxTabsPerPlayer });
   } catch (err) {
     db.close();
     throw err;
@@ -53,7 +54,13 @@ export async function startServer(config: Config): Promise<RunningServer> {
   const files = loadStaticFiles(config.clientDir);
   const health = healthCheck({ version: VERSION, schema: () => schemaVersion(db), probeWrite: () => store.probeWrite(HEALTH_LOCK_WAIT_MS) });
   const api = new Api(store, { perPlayer: config.practicePerMinute, perAddress: config.practicePerAddressPerMinute });
-  const http = createServer(createRequestHandler(files, health, api));
+  const handler = createRequestHandler(files, health, api);
+  // Slow requests hold a socket each: headers and whole requests have deadlines (answered 408),
+  // checked every second rather than Node's default 30 s.
+  const http = createServer(
+    { headersTimeout: config.headersTimeoutMs, requestTimeout: config.requestTimeoutMs, connectionsCheckingInterval: Math.min(1000, config.headersTimeoutMs) },
+    handler,
+  );
   try {
     await new Promise<void>((resolve, reject) => {
       const onError = (err: NodeJS.ErrnoException) => {
@@ -71,8 +78,15 @@ export async function startServer(config: Config): Promise<RunningServer> {
   }
 
   // Attached only once listening: a WebSocketServer re-emits its HTTP server's errors.
-  const wss = new WebSocketServer({ server: http, path: '/ws', maxPayload: MAX_MESSAGE_BYTES, perMessageDeflate: false });
-  const binding = bindWebSocket(wss, service, { pingMs: config.pingMs, tickMs: 250 });
+  const perAddress = new AddressCap(config.maxSocketsPerAddress);
+  const wss = new WebSocketServer({ server: http, path: '/ws', maxPayload: MAX_MESSAGE_BYTES, perMessageDeflate: false, verifyClient: perAddress.verify });
+  const binding = bindWebSocket(wss, service, {
+    pingMs: config.pingMs,
+    tickMs: 250,
+    helloMs: config.helloMs,
+    perAddress,
+    maxBufferedBytes: config.maxBufferedBytes,
+  });
 
   const { port } = http.address() as AddressInfo;
   const hostInUrl = config.host.includes(':') ? `[${config.host}]` : config.host;

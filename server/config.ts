@@ -3,6 +3,7 @@ import { fileURLToPath } from 'node:url';
 import { resolve } from 'node:path';
 import { PRACTICE_LIMITS } from './api/rate-limit.ts';
 import { RATED_MIN_PLAY_MS } from './ratings/policy.ts';
+import { MAX_TABS_PER_PLAYER } from '../shared/protocol/index.ts';
 
 export const ROOT = resolve(fileURLToPath(new URL('..', import.meta.url)));
 
@@ -26,6 +27,17 @@ export interface Config {
   readonly practicePerAddressPerMinute: number;
   /** Server time from a match's start to its result below which it is not rated (ms; 0: no minimum). */
   readonly ratedMinPlayMs: number;
+  /** How long a new socket has to say hello before it is closed (ms). */
+  readonly helloMs: number;
+  /** WebSocket connections open at once from one address (an IPv6 /64 counts as one). */
+  readonly maxSocketsPerAddress: number;
+  /** Sockets one player may have welcomed at once (tabs). */
+  readonly maxTabsPerPlayer: number;
+  /** Bytes the server may hold unsent for one socket before it drops it (a client that does not read). */
+  readonly maxBufferedBytes: number;
+  /** HTTP: how long a request's headers, and the whole request with its body, may take to arrive (ms). */
+  readonly headersTimeoutMs: number;
+  readonly requestTimeoutMs: number;
 }
 
 function seconds(env: NodeJS.ProcessEnv, name: string, fallback: number): number {
@@ -81,5 +93,21 @@ export function readConfig(env: NodeJS.ProcessEnv = process.env): Config {
     practicePerMinute: count(env, 'BAIZE_PRACTICE_PER_MINUTE', PRACTICE_LIMITS.perPlayer, 1_000_000, 'requests a minute'),
     practicePerAddressPerMinute: count(env, 'BAIZE_PRACTICE_PER_ADDRESS_PER_MINUTE', PRACTICE_LIMITS.perAddress, 1_000_000, 'requests a minute'),
     ratedMinPlayMs: secondsOrZero(env, 'BAIZE_RATED_MIN_PLAY_S', RATED_MIN_PLAY_MS / 1000),
+    ...limits(env),
+  };
+}
+
+/** Limits on connections and requests, against clients that hold resources without using them. */
+function limits(env: NodeJS.ProcessEnv): Pick<Config, 'helloMs' | 'maxSocketsPerAddress' | 'maxTabsPerPlayer' | 'maxBufferedBytes' | 'headersTimeoutMs' | 'requestTimeoutMs'> {
+  const headersTimeoutMs = seconds(env, 'BAIZE_HTTP_HEADERS_TIMEOUT_S', 10);
+  const requestTimeoutMs = seconds(env, 'BAIZE_HTTP_REQUEST_TIMEOUT_S', 30);
+  if (headersTimeoutMs > requestTimeoutMs) throw new RangeError('BAIZE_HTTP_HEADERS_TIMEOUT_S must not be longer than BAIZE_HTTP_REQUEST_TIMEOUT_S');
+  return {
+    helloMs: seconds(env, 'BAIZE_HELLO_TIMEOUT_S', 10),
+    maxSocketsPerAddress: count(env, 'BAIZE_MAX_SOCKETS_PER_ADDRESS', 50, 1_000_000_000, 'sockets'),
+    maxTabsPerPlayer: count(env, 'BAIZE_MAX_TABS_PER_PLAYER', MAX_TABS_PER_PLAYER, 1_000_000, 'sockets'),
+    maxBufferedBytes: count(env, 'BAIZE_MAX_BUFFERED_KIB', 1024, 1_000_000_000, 'KiB') * 1024,
+    headersTimeoutMs,
+    requestTimeoutMs,
   };
 }

@@ -6,6 +6,7 @@ import type { PageContext } from '../main.ts';
 export function mountLobby(root: HTMLElement, ctx: PageContext): () => void {
   const { session } = ctx;
   const rooms = h('ul', { className: 'rooms', 'aria-label': 'Rooms' });
+  const more = h('p', { className: 'more' });
   const online = h('p', { className: 'online', 'aria-label': 'Online' });
   const note = h('p', { role: 'status', className: 'note' });
   const kind = h('select', { name: 'kind', 'aria-label': 'Game' }, ...Object.entries(KIND_NAMES).map(([v, t]) => h('option', { value: v }, t)));
@@ -65,12 +66,14 @@ export function mountLobby(root: HTMLElement, ctx: PageContext): () => void {
   });
 
   root.append(
-    h('section', { 'aria-label': 'Lobby' }, h('h2', {}, 'Lobby'), rooms, note),
+    h('section', { 'aria-label': 'Lobby' }, h('h2', {}, 'Lobby'), rooms, more, note),
     h('section', { 'aria-label': 'Open a table' }, h('h2', {}, 'Open a table'), create),
     h('section', { 'aria-label': 'Players' }, h('h2', {}, 'Online'), online, rename, h('p', {}, link('/practice', 'Practise alone'), ' · ', link('/leaderboard', 'Leaderboard'))),
   );
 
-  const render = (list: readonly LobbyRoom[]) => {
+  const render = (list: readonly LobbyRoom[], notListed: number) => {
+    // The server lists a few hundred rooms, waiting ones first, and counts the rest.
+    more.textContent = notListed > 0 ? `and ${notListed} more` : '';
     rooms.replaceChildren(
       ...(list.length === 0 ? [h('li', { className: 'empty' }, 'No tables yet: open one.')] : []),
       ...list.map((r) => {
@@ -90,7 +93,7 @@ export function mountLobby(root: HTMLElement, ctx: PageContext): () => void {
   };
   const stop = session.onMessage((m: ServerMessage) => {
     if (m.type === 'lobby') {
-      render(m.rooms);
+      render(m.rooms, m.more ?? 0);
       const who = m.online ?? [];
       online.textContent = who.length === 0 ? 'Nobody else yet.' : who.map((p) => p.name).join(', ');
     }

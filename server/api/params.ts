@@ -6,7 +6,7 @@ import { PRACTICE_KINDS, PRACTICE_MAX_SHOTS } from '../../shared/rules/index.ts'
 
 export class ApiError extends Error {
   constructor(
-    readonly status: 400 | 404 | 405 | 409 | 413 | 429,
+    readonly status: 400 | 404 | 405 | 408 | 409 | 413 | 429,
     readonly error: string,
     message: string,
     /** Headers the answer carries (Retry-After on a 429). */

@@ -241,10 +241,16 @@ function seedRefused(state: 'used' | 'unknown', kind: string): ApiError {
 async function readJson(req: IncomingMessage): Promise<unknown> {
   const chunks: Buffer[] = [];
   let size = 0;
-  for await (const chunk of req) {
-    size += (chunk as Buffer).length;
-    if (size > MAX_BODY_BYTES) throw new ApiError(413, 'too-large', `the body is larger than ${MAX_BODY_BYTES} bytes`);
-    chunks.push(chunk as Buffer);
+  try {
+    for await (const chunk of req) {
+      size += (chunk as Buffer).length;
+      if (size > MAX_BODY_BYTES) throw new ApiError(413, 'too-large', `the body is larger than ${MAX_BODY_BYTES} bytes`);
+      chunks.push(chunk as Buffer);
+    }
+  } catch (err) {
+    if (err instanceof ApiError) throw err;
+    // The request's deadline passed (the server has answered 408 and closed it) or the client left.
+    throw new ApiError(408, 'timeout', 'the request body did not arrive in time');
   }
   try {
     return JSON.parse(Buffer.concat(chunks).toString('utf8')) as unknown;

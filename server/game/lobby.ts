@@ -78,15 +78,28 @@ export class Lobby {
     for (const conn of this.sockets.get(player.id) ?? []) this.players.set(conn, player);
   }
 
-  /** The public rooms not yet over, oldest first; a game both players have left (paused) is not shown. */
-  listing(): LobbyRoom[] {
-    const out: LobbyRoom[] = [];
+  /**
+   * The public rooms not yet over, at most `max` of them: the waiting ones first (a seat to take),
+   * then the games in play, each oldest first; `more` counts the rest. A game both players have
+   * left (paused) is not shown. Bounded so that thousands of rooms never make one huge message.
+   */
+  listing(max: number): { rooms: LobbyRoom[]; more: number } {
+    const waiting: LobbyRoom[] = [];
+    const playing: LobbyRoom[] = [];
+    let total = 0;
     for (const room of this.rooms.values()) {
       const s = room.state;
       if (s.private || (s.status !== 'waiting' && s.status !== 'playing')) continue;
       if (s.status === 'playing' && s.seats.every((p) => !this.connected(p.id))) continue;
-      out.push({ id: s.id, kind: s.kind, raceTo: s.raceTo, players: s.seats.map((p) => ({ id: p.id, name: p.name })), spectators: room.spectators.size, status: s.status });
+      total++;
+      const list = s.status === 'waiting' ? waiting : playing;
+      if (waiting.length + playing.length >= max) {
+        if (list === playing || playing.length === 0) continue;
+        playing.pop(); // a waiting room takes the place of the newest game in play
+      }
+      list.push({ id: s.id, kind: s.kind, raceTo: s.raceTo, players: s.seats.map((p) => ({ id: p.id, name: p.name })), spectators: room.spectators.size, status: s.status });
     }
-    return out;
+    const rooms = [...waiting, ...playing];
+    return { rooms, more: total - rooms.length };
   }
 }

@@ -4,12 +4,13 @@
 // that fails (bad input, the rules, the physics, the disk) changes nothing for anyone.
 import { randomBytes } from 'node:crypto';
 import type { ClientMessage, PlayerRef, ServerMessage } from '../../shared/protocol/index.ts';
-import { MAX_OPEN_ROOMS_PER_PLAYER } from '../../shared/protocol/index.ts';
+import { LOBBY_MAX_ROOMS, LOBBY_UPDATE_MS, MAX_OPEN_ROOMS_PER_PLAYER, MAX_TABS_PER_PLAYER } from '../../shared/protocol/index.ts';
 import { claimGame, concede, decide, EMPTY_TALLY, placeCueBall, playShot, shotClockExpired, tallied, type Game, type MatchAction } from '../../shared/rules/index.ts';
 import { RATED_MIN_PLAY_MS, RATED_MIN_SHOTS, unratedSentence, type UnratedReason } from '../ratings/policy.ts';
 import type { MatchResult, RoomChange, Store } from '../store.ts';
 import { guestName, nameProblem, normalizeName } from '../players/names.ts';
 import { hashToken, newToken } from '../tokens.ts';
+import { ChatLimits } from './chat-limits.ts';
 import { describeError, ServiceError } from './errors.ts';
 import { GuestLimit } from './guest-limit.ts';
 import { Lobby, type ConnId } from './lobby.ts';
@@ -34,6 +35,8 @@ export interface ServiceOptions {
   readonly guestsPerAddress?: number;
   /** How long a player who never played is kept after last seen (ms; absent: for ever). */
   readonly guestKeepMs?: number;
+  /** Sockets one player may have welcomed at once (tabs); default MAX_TABS_PER_PLAYER. */
+  readonly maxTabsPerPlayer?: number;
 }
 
 type Msg<T extends ClientMessage['type']> = Extract<ClientMessage, { type: T }>;
@@ -73,6 +76,12 @@ export class GameService {
   /** When the pruner's next pass starts, and the id after which its next batch starts. */
   private pruneAt = 0;
   private pruneFrom = 0;
+  /** When the lobby last went to its subscribers: updates are coalesced, one per LOBBY_UPDATE_MS. */
+  private lobbySentAt = -Infinity;
+  /** Rooms whose spectators changed: one `room` each to their members at the next tick. */
+  private readonly roomsChanged = new Set<Room>();
+  private readonly chatLimits = new ChatLimits();
+  private chatPrunedAt = 0;
 
   constructor(
     private readonly store: Store,
@@ -120,7 +129,7 @@ export class GameService {
     for (const id of this.watching.get(conn) ?? []) {
       const room = this.lobby.rooms.get(id);
       if (room?.spectators.delete(conn)) {
-        this.broadcastRoom(room);
+        this.roomsChanged.add(room);
         this.lobbyChanged = true;
       }
     }
@@ -145,6 +154,17 @@ export class GameService {
         // A room whose timer fails (say, the disk) stays as it was and is tried again next tick.
         this.log(`timers of room ${room.state.id}: ${(err as Error).stack ?? String(err)}`);
       }
+    }
+    for (const room of [...this.roomsChanged]) if (room.state.status !== 'closed') this.broadcastRoom(room);
+    this.roomsChanged.clear();
+    if (this.lobbyChanged && now - this.lobbySentAt >= LOBBY_UPDATE_MS) {
+      this.lobbyChanged = false;
+      this.lobbySentAt = now;
+      if (this.lobby.subscribers.size > 0) this.send([...this.lobby.subscribers], this.lobbyMessage());
+    }
+    if (now - this.chatPrunedAt >= 10_000) {
+      this.chatLimits.prune(now);
+      this.chatPrunedAt = now;
     }
     return this.flush();
   }
@@ -210,7 +230,7 @@ export class GameService {
       case 'lobby':
         if (msg.watch === false) this.lobby.subscribers.delete(conn);
         else this.lobby.subscribers.add(conn);
-        this.send([conn], { type: 'lobby', ...re(msg.id), rooms: this.lobby.listing(), online: this.lobby.online() });
+        this.send([conn], this.lobbyMessage(msg.id));
         return;
       case 'create':
         return this.create(conn, player, msg);
@@ -247,6 +267,7 @@ export class GameService {
       case 'chat': {
         const room = this.room(msg.room);
         if (!this.seated(room, player.id) && !room.spectators.has(conn)) throw new ServiceError('not-seated', 'only the players and spectators of a room may chat there');
+        this.chatLimits.take(player.id, room.state.id, this.now());
         this.send(this.members(room), { type: 'chat', room: room.state.id, from: player, text: msg.text, at: this.now() });
         return;
       }
@@ -262,6 +283,8 @@ export class GameService {
       if (!row) throw new ServiceError('bad-token', 'unknown token: say hello without one to start as a new guest');
       player = { id: String(row.id), name: row.name };
       token = msg.token;
+      const tabs = this.options.maxTabsPerPlayer ?? MAX_TABS_PER_PLAYER;
+      if (this.lobby.socketsOf(player.id).length >= tabs) throw new ServiceError('too-many-tabs', `at most ${tabs} tabs (sockets) per player are open at once: close one, then say hello again`);
       if (row.lastSeen === null || row.lastSeen + SEEN_EVERY_MS <= this.now()) this.touch(row.id);
     } else {
       const asked = msg.name === undefined ? undefined : this.freeName(msg.name);
@@ -428,7 +451,9 @@ export class GameService {
     let set = this.watching.get(conn);
     if (!set) this.watching.set(conn, (set = new Set()));
     set.add(room.state.id);
-    this.broadcastRoom(room, conn, msg.id);
+    // The new spectator gets the room at once; the others see the count at the next tick.
+    this.send([conn], { type: 'room', ...re(msg.id), room: this.view(room) });
+    this.roomsChanged.add(room);
     if (!room.state.private) this.lobbyChanged = true;
   }
 
@@ -437,7 +462,7 @@ export class GameService {
     if (room.spectators.delete(conn)) {
       this.watching.get(conn)?.delete(room.state.id);
       this.send([conn], { type: 'left', ...re(msg.id), room: room.state.id });
-      this.broadcastRoom(room);
+      this.roomsChanged.add(room);
       this.lobbyChanged = true;
       return;
     }
@@ -663,6 +688,7 @@ export class GameService {
 
   /** `room` to everyone there; the one who asked gets it with `re`. */
   private broadcastRoom(room: Room, conn?: ConnId, id?: Re): void {
+    this.roomsChanged.delete(room);
     const view = this.view(room);
     const members = this.members(room);
     this.send(
@@ -682,11 +708,12 @@ export class GameService {
     this.send([conn], { type: 'error', ...re(id), code: e.code, message: e.message });
   }
 
+  private lobbyMessage(id?: Re): ServerMessage {
+    const { rooms, more } = this.lobby.listing(LOBBY_MAX_ROOMS);
+    return { type: 'lobby', ...re(id), rooms, more, online: this.lobby.online() };
+  }
+
   private flush(): Delivery[] {
-    if (this.lobbyChanged) {
-      this.lobbyChanged = false;
-      if (this.lobby.subscribers.size > 0) this.send([...this.lobby.subscribers], { type: 'lobby', rooms: this.lobby.listing(), online: this.lobby.online() });
-    }
     const out = this.out;
     this.out = [];
     return out;

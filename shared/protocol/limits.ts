@@ -17,6 +17,16 @@ export const MAX_OPEN_ROOMS_PER_PLAYER = 5;
 /** Messages a socket may send: a token bucket of this many a second with bursts up to RATE_BURST. */
 export const RATE_PER_SECOND = 20;
 export const RATE_BURST = 40;
+/** Chat lines one player may send (across all their tabs), and one room may carry, in CHAT_WINDOW_S seconds. */
+export const CHAT_PER_PLAYER = 5;
+export const CHAT_PER_ROOM = 20;
+export const CHAT_WINDOW_S = 10;
+/** Rooms listed in a `lobby` message (waiting rooms first); `more` counts the rest. */
+export const LOBBY_MAX_ROOMS = 200;
+/** Lobby updates go to subscribers at most once in this many ms (the latest list). */
+export const LOBBY_UPDATE_MS = 1000;
+/** Default caps the server's environment may change: sockets open at once per player (tabs). */
+export const MAX_TABS_PER_PLAYER = 10;
 /** WebSocket close codes the server uses. */
 export const CLOSE_TOO_BIG = 1009;
 export const CLOSE_POLICY = 1008;

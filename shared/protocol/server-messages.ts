@@ -70,7 +70,8 @@ export type ServerMessage =
   | { readonly type: 'welcome'; readonly re?: string | number; readonly player: PlayerRef; readonly token: string }
   /** The player's own name changed (a rename, on every socket of theirs). */
   | { readonly type: 'player'; readonly re?: string | number; readonly player: PlayerRef }
-  | { readonly type: 'lobby'; readonly re?: string | number; readonly rooms: readonly LobbyRoom[]; readonly online: readonly PlayerRef[] }
+  /** At most LOBBY_MAX_ROOMS rooms, waiting ones first; `more` counts the public rooms not listed. */
+  | { readonly type: 'lobby'; readonly re?: string | number; readonly rooms: readonly LobbyRoom[]; readonly more: number; readonly online: readonly PlayerRef[] }
   | { readonly type: 'room'; readonly re?: string | number; readonly room: RoomView }
   | {
       readonly type: 'shot';

@@ -29,8 +29,9 @@ export function tempDir(prefix = 'baize-test-'): string {
 function launch(env: Record<string, string>): { child: ChildProcess; out: string[]; err: string[]; exited: Promise<number | null> } {
   const child = spawn(process.execPath, ['--import', 'tsx', 'server/main.ts'], {
     cwd: ROOT,
-    // Every test connects from 127.0.0.1: new players per address are not limited unless a test says so.
-    env: { ...process.env, HOST: '127.0.0.1', PORT: '0', BAIZE_GUESTS_PER_ADDRESS: '1000000000', ...env },
+    // Every test connects from 127.0.0.1: new players and sockets per address are not limited
+    // unless a test says so.
+    env: { ...process.env, HOST: '127.0.0.1', PORT: '0', BAIZE_GUESTS_PER_ADDRESS: '1000000000', BAIZE_MAX_SOCKETS_PER_ADDRESS: '100000', ...env },
     stdio: ['ignore', 'pipe', 'pipe'],
   });
   const out: string[] = [];

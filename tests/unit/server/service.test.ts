@@ -42,23 +42,29 @@ describe('the game service', () => {
     expect(errorOf(h.send(6, { type: 'lobby' }).get(6))?.code).toBe('not-welcomed');
   });
 
-  it('lists public rooms in the lobby, keeps private ones out, and updates subscribers', () => {
+  it('lists public rooms in the lobby, keeps private ones out, and updates subscribers at the next tick', () => {
     h = openHarness();
     welcome(h, 1, 'Ann');
     welcome(h, 2, 'Bob');
     h.send(2, { type: 'lobby' });
-    expect(last(h, 2, 'lobby').rooms).toEqual([]);
+    expect(last(h, 2, 'lobby')).toMatchObject({ rooms: [], more: 0 });
     h.send(1, { type: 'create', kind: 'snooker', raceTo: 3 });
     h.send(1, { type: 'create', kind: 'nineball', private: true });
+    h.clock += 1000;
+    h.tick();
     const rooms = last(h, 2, 'lobby').rooms;
     expect(rooms).toHaveLength(1);
     expect(rooms[0]).toMatchObject({ kind: 'snooker', raceTo: 3, players: [{ name: 'Ann' }], spectators: 0, status: 'waiting' });
     // watch: false stops the updates; a later lobby request starts them again.
     h.send(2, { type: 'lobby', watch: false });
-    expect(h.send(1, { type: 'create', kind: 'eightball' }).get(2)?.some((m) => m.type === 'lobby')).toBeFalsy();
+    h.send(1, { type: 'create', kind: 'eightball' });
+    h.clock += 1000;
+    expect(h.tick().get(2)?.some((m) => m.type === 'lobby')).toBeFalsy();
     h.send(2, { type: 'lobby' });
     expect(last(h, 2, 'lobby').rooms).toHaveLength(2);
-    expect(h.send(1, { type: 'create', kind: 'threecushion' }).get(2)?.some((m) => m.type === 'lobby')).toBe(true);
+    h.send(1, { type: 'create', kind: 'threecushion' });
+    h.clock += 1000;
+    expect(h.tick().get(2)?.some((m) => m.type === 'lobby')).toBe(true);
   });
 
   it('starts the game on join, the creator breaking, and refuses a third player', () => {
@@ -321,6 +327,7 @@ describe('spectators', () => {
     h.send(1, { type: 'create', kind: 'nineball' });
     const id = last(h, 1, 'room').room.id;
     h.send(2, { type: 'watch', room: id });
+    h.tick(); // spectators come and go in the room's next update
     expect(last(h, 1, 'room').room.spectators).toBe(1);
     h.send(2, { type: 'join', room: id });
     expect(last(h, 1, 'room').room).toMatchObject({ status: 'playing', spectators: 0 });

@@ -1,0 +1,34 @@
+// Chat limits: per player across all their tabs, and per room, so that neither many tabs nor many
+// players can flood a room's spectators. A line is let through only when both have room for it.
+import { CHAT_PER_PLAYER, CHAT_PER_ROOM, CHAT_WINDOW_S } from '../../shared/protocol/index.ts';
+import { TokenBucket } from '../ws/token-bucket.ts';
+import { ServiceError } from './errors.ts';
+
+export class ChatLimits {
+  private readonly players = new Map<string, TokenBucket>();
+  private readonly rooms = new Map<string, TokenBucket>();
+
+  /** Counts a line from `player` in `room`, or refuses it with 'rate-limited' and how long to wait. */
+  take(player: string, room: string, now: number): void {
+    const mine = bucket(this.players, player, CHAT_PER_PLAYER, now);
+    const theirs = bucket(this.rooms, room, CHAT_PER_ROOM, now);
+    const wait = Math.max(mine.waitMs(now), theirs.waitMs(now));
+    if (wait > 0) {
+      const who = mine.waitMs(now) > 0 ? 'you are sending messages too fast' : 'this room is receiving messages too fast';
+      throw new ServiceError('rate-limited', `${who}; wait ${Math.ceil(wait / 1000)} s`);
+    }
+    mine.take(now);
+    theirs.take(now);
+  }
+
+  /** Forgets the buckets that have filled up again, so that the maps hold only recent talkers. */
+  prune(now: number): void {
+    for (const map of [this.players, this.rooms]) for (const [key, b] of map) if (b.full(now)) map.delete(key);
+  }
+}
+
+function bucket(map: Map<string, TokenBucket>, key: string, lines: number, now: number): TokenBucket {
+  let b = map.get(key);
+  if (!b) map.set(key, (b = new TokenBucket(lines / CHAT_WINDOW_S, lines, now)));
+  return b;
+}
