@@ -9,7 +9,8 @@ import { PROVISIONAL_RD } from '../ratings/glicko2.ts';
 import { PRACTICE_SEED_TTL_MS, PracticeSeedError, type MatchRow, type PlayerRow, type RecordEntry, type Store } from '../store.ts';
 import { hashToken } from '../tokens.ts';
 import { ApiError, IdParam, LeaderboardQuery, MatchesQuery, parse, PracticeBody, PracticeStartBody, RecordsQuery } from './params.ts';
-import { addressKey, PRACTICE_LIMITS, RateLimiter, type PracticeLimits } from './rate-limit.ts';
+import { addressKey } from '../address.ts';
+import { PRACTICE_LIMITS, RateLimiter, type PracticeLimits } from './rate-limit.ts';
 
 /** Largest request body accepted (bytes): a practice run of 500 shots fits well within it. */
 export const MAX_BODY_BYTES = 256 * 1024;

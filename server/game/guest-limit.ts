@@ -1,6 +1,8 @@
 // New players per address: a token bucket per address holding `perHour` and refilling `perHour` an
 // hour. A bucket that has filled up again is forgotten, so memory holds only the addresses that
 // made a player within the last hour, and never more than `maxAddresses` of them.
+import { addressKey } from '../address.ts';
+
 const HOUR_MS = 3_600_000;
 
 interface Bucket {
@@ -44,22 +46,4 @@ export class GuestLimit {
   private level(bucket: Bucket, now: number): number {
     return Math.min(this.perHour, bucket.tokens + ((now - bucket.at) * this.perHour) / HOUR_MS);
   }
-}
-
-/**
- * The part of an address that names one subscriber: an IPv4 address (also when written as
- * IPv4-mapped IPv6), or the /64 network of an IPv6 address, as one household gets a whole /64.
- */
-export function addressKey(address: string): string {
-  const mapped = /^::ffff:(\d+\.\d+\.\d+\.\d+)$/i.exec(address);
-  if (mapped) return mapped[1]!;
-  if (!address.includes(':')) return address;
-  const [head = '', tail] = address.toLowerCase().split('::');
-  const left = head === '' ? [] : head.split(':');
-  const right = tail === undefined || tail === '' ? [] : tail.split(':');
-  const groups = tail === undefined ? left : [...left, ...Array<string>(Math.max(0, 8 - left.length - right.length)).fill('0'), ...right];
-  return `${groups
-    .slice(0, 4)
-    .map((g) => g.replace(/^0+(?=.)/, ''))
-    .join(':')}::/64`;
 }

@@ -1,6 +1,6 @@
 // Which connections count as one address for the limits per address.
 import { describe, expect, it } from 'vitest';
-import { addressKey } from '../../../server/ws/address.ts';
+import { addressKey } from '../../../server/address.ts';
 
 describe('addressKey', () => {
   it('keeps an IPv4 address, also written as IPv6', () => {
@@ -19,7 +19,8 @@ describe('addressKey', () => {
     expect(addressKey('::1')).toBe('0:0:0:0::/64');
   });
 
-  it('passes anything else through', () => {
-    expect(addressKey('')).toBe('');
+  it('names a missing address unknown', () => {
+    expect(addressKey('')).toBe('unknown');
+    expect(addressKey(undefined)).toBe('unknown');
   });
 });

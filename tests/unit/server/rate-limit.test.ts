@@ -2,7 +2,8 @@
 // is enough, a bounded number of buckets, and addresses keyed as one subscriber's.
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { addressKey, MIN_BURST, PRACTICE_LIMITS, RateLimiter } from '../../../server/api/rate-limit.ts';
+import { addressKey } from '../../../server/address.ts';
+import { MIN_BURST, PRACTICE_LIMITS, RateLimiter } from '../../../server/api/rate-limit.ts';
 import { readConfig } from '../../../server/config.ts';
 
 describe('the rate limiter', () => {
