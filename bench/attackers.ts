@@ -1,13 +1,18 @@
-// The attacks of issue 36's findings 4 and 5, run by bench/attacks.ts in a process of their own so
+// The attacks of issue 36's findings 4, 5 and 9, run by bench/attacks.ts in a process of their own so
 // that the measurements are not taken in the attackers' event loop. Each runs for `seconds`, then
 // prints one JSON line of what it saw and exits.
 //   idle:  2,000 sockets from 127.0.0.1 that never say hello; every one the server closes is opened
 //          again (100 ms later), as a persistent attacker would.
 //   flood: one player's 1,000 tabs that never read, seated in a game in play, and 60 more sockets
 //          switching watch/leave on that room at 18 frames a second each, under the rate limit.
+//   practice: 8 players asking for a practice seed and posting a scoring snooker break with it,
+//          again and again, as fast as the answers come.
 import type { Socket } from 'node:net';
 import { parseArgs } from 'node:util';
 import { WebSocket } from 'ws';
+import { chooseShot } from '../bots/strategy.ts';
+import { simulate } from '../shared/physics/index.ts';
+import { playShot, practiceStart, type Game, type PracticeShot } from '../shared/rules/index.ts';
 
 const { values } = parseArgs({
   options: { attack: { type: 'string' }, url: { type: 'string' }, seconds: { type: 'string', default: '20' } },
@@ -99,9 +104,59 @@ async function flood(until: number): Promise<void> {
   await Promise.all(Array.from({ length: 60 }, churn));
 }
 
+/** A snooker break from the D of up to `max` shots: a first red by a fan of headings, then the bot. */
+function snookerBreak(max: number): PracticeShot[] {
+  const P = 'bench';
+  let game: Game = practiceStart('snooker', P, 0);
+  const shots: PracticeShot[] = [];
+  for (let i = 0; i < 360 && shots.length === 0; i++) {
+    const shot = { ball: 'cue', heading: (i * Math.PI) / 180, speed: 5, side: 0, top: 0 };
+    try {
+      const next = playShot(game, { ...shot, player: P }).game;
+      if (!next.verdict!.foul && next.verdict!.potted.length > 0) {
+        shots.push({ shot });
+        game = next;
+      }
+    } catch {
+      // the next heading
+    }
+  }
+  while (shots.length > 0 && shots.length < max && game.winner === null && game.turn === P) {
+    const { player: _p, ...shot } = chooseShot(game, 'sound', (scene, s) => simulate(scene, s));
+    shots.push({ shot });
+    game = playShot(game, { ...shot, player: P }).game;
+  }
+  return shots;
+}
+
+async function practice(until: number): Promise<void> {
+  const http = url.replace(/^ws/, 'http').replace(/\/ws$/, '');
+  const shots = snookerBreak(30);
+  const counts: Record<string, number> = {};
+  const post = async (path: string, body: unknown) => {
+    const res = await fetch(`${http}${path}`, { method: 'POST', headers: { 'content-type': 'application/json' }, body: JSON.stringify(body) });
+    const json = (await res.json()) as { seed?: number };
+    counts[`${path} ${res.status}`] = (counts[`${path} ${res.status}`] ?? 0) + 1;
+    return { status: res.status, json };
+  };
+  await Promise.all(
+    Array.from({ length: 8 }, async () => {
+      const ws = await open();
+      if (!ws) return;
+      const token = (await request(ws, { type: 'hello' }, 'h')).token as string;
+      while (Date.now() < until) {
+        const start = await post('/api/practice/start', { token, kind: 'snooker' });
+        if (start.status === 200) await post('/api/practice', { token, kind: 'snooker', seed: start.json.seed, shots });
+      }
+    }),
+  );
+  Object.assign(stats, { shots: shots.length, ...counts });
+}
+
 const until = Date.now() + seconds * 1000;
 if (values.attack === 'idle') await idle(until);
 else if (values.attack === 'flood') await flood(until);
+else if (values.attack === 'practice') await practice(until);
 else throw new Error(`unknown attack ${values.attack}`);
 await sleep(Math.max(0, until - Date.now()));
 stats.openAtEnd = [...all].filter((ws) => ws.readyState === ws.OPEN).length;

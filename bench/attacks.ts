@@ -1,5 +1,5 @@
-// npm run bench:attacks [-- --seconds 20 --scenarios none,idle,flood,flood-uncapped]
-// The attacks of issue 36's findings 4 and 5 on the real server (a child process on 127.0.0.1,
+// npm run bench:attacks [-- --seconds 20 --scenarios none,idle,flood,flood-uncapped,practice]
+// The attacks of issue 36's findings 4, 5 and 9 on the real server (a child process on 127.0.0.1,
 // a temporary database), each from a process of its own (bench/attackers.ts), while this process
 // measures what an honest user meets: GET /healthz ten times a second (2 s timeout), and once a
 // second a player from another address (127.0.0.3) who connects, says hello and asks for the
@@ -19,7 +19,7 @@ const ROOT = resolve(import.meta.dirname, '..');
 const { values } = parseArgs({
   options: {
     seconds: { type: 'string', default: '20' },
-    scenarios: { type: 'string', default: 'none,idle,flood,flood-uncapped' },
+    scenarios: { type: 'string', default: 'none,idle,flood,flood-uncapped,practice' },
   },
 });
 const seconds = Number(values.seconds);
@@ -32,6 +32,7 @@ const SCENARIOS: Record<string, { attack?: string; env: Record<string, string>; 
     env: { BAIZE_MAX_SOCKETS_PER_ADDRESS: '100000', BAIZE_MAX_TABS_PER_PLAYER: '100000' },
     what: 'the same, caps lifted',
   },
+  practice: { attack: 'practice', env: { BAIZE_MAX_SOCKETS_PER_ADDRESS: '50' }, what: '8 players posting practice runs non-stop' },
 };
 const chosen = values.scenarios.split(',');
 if (!(seconds > 0) || chosen.some((s) => !(s in SCENARIOS))) {
