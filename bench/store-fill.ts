@@ -78,13 +78,16 @@ export interface FillStats {
   readonly matchIds: readonly [number, number];
 }
 
-/** A unique name of 1-32 characters (case-insensitively unique: the index in base 36 ends it). */
+/**
+ * A unique name of 1-32 characters, also by its lookalike keys (server/players/names.ts): the index
+ * in decimal ends it, and no two digit strings look alike.
+ */
 const ADJECTIVES = ['Swift', 'Calm', 'Lucky', 'Bold', 'Quiet', 'Sharp', 'Steady', 'Clever', 'Brave', 'Silent', 'Golden', 'Red', 'Blue', 'Green', 'Pink', 'Black'];
 const NOUNS = ['Cue', 'Pocket', 'Rail', 'Chalk', 'Break', 'Spin', 'Kiss', 'Bank', 'Draw', 'Baize', 'Frame', 'Carom', 'Cushion', 'Rack', 'Shark', 'Hustler'];
 function playerName(i: number, r: () => number): string {
   const a = ADJECTIVES[Math.floor(r() * ADJECTIVES.length)]!;
   const n = NOUNS[Math.floor(r() * NOUNS.length)]!;
-  return `${a}${n}_${i.toString(36)}`;
+  return `${a}${n}_${i}`;
 }
 
 /** sha256 of the index: unique 32-byte token hashes, the same on every run. */
