@@ -103,8 +103,9 @@ export class Pace {
     this.button.textContent = label(next);
     if (c.from < c.outcome.duration) this.sound?.play(c.sounds, c.from, c.speed);
     // The animator ends the previous run when it starts this one: only this run's end counts.
+    const run = c.run;
     void this.animator.play(c.outcome, c.speed, c.from).then(() => {
-      if (this.current === c && c.run === this.runs) this.finish();
+      if (this.current === c && c.run === run) this.finish();
     });
   }
 
