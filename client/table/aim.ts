@@ -233,14 +233,15 @@ export class Aim {
     if (s) this.drawMeter(ctx, cancelled ? null : this.state.speed);
   }
 
-  /** The power meter while a stroke is pulled: a bar and its words at the table's top left. */
+  /** The power meter while a stroke is pulled: a bar and its words on the top rail, between a corner and the middle pocket. */
   private drawMeter(ctx: CanvasRenderingContext2D, speed: number | null): void {
     const canvas = this.view.canvas;
-    const dpr = canvas.width / (parseFloat(canvas.style.width) || canvas.width);
+    const cssW = parseFloat(canvas.style.width) || canvas.width;
+    const dpr = canvas.width / cssW;
     ctx.save();
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
-    const x = 14;
-    const y = 12;
+    const x = Math.round(cssW * 0.25 - 75);
+    const y = 6;
     const w = 150;
     const f = speed === null ? 0 : powerFraction(speed);
     ctx.fillStyle = 'rgba(0,0,0,0.6)';

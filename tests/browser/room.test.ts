@@ -265,6 +265,41 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
     await b.context().close();
   }, 60_000);
 
+  it('practice: a drag pulled back from the cue ball plays at its power without turning the cue; pulled forward, it cancels', async () => {
+    const page = await player();
+    await page.goto(`${env.server.url}/practice`);
+    const g = newGame('practice', ['me'], { layout: 'nineball' });
+    const box = (await page.locator('canvas.table').boundingBox())!;
+    const scale = box.width / (tableSpec(g.table).length + 2 * RAIL);
+    const cue = g.balls.find((x) => x.id === 'cue')!;
+    const from = { x: box.x + box.width / 2 + cue.x * scale, y: box.y + box.height / 2 - cue.y * scale };
+    // Aim at the rack and hold it with a click; then the pointer goes to the cue ball.
+    const rack = g.balls.find((x) => x.id === '1')!;
+    await page.mouse.click(box.x + box.width / 2 + rack.x * scale, box.y + box.height / 2 - rack.y * scale);
+    const aimShown = page.getByLabel('Aim', { exact: true });
+    const aimed = await aimShown.textContent();
+    const power = page.getByLabel('Power', { exact: true });
+    const before = await power.inputValue();
+    // Pulled forward (towards the aim) and let go: nothing played, the power as it was.
+    await page.mouse.move(from.x, from.y, { steps: 3 });
+    await page.mouse.down();
+    await page.mouse.move(from.x + 80, from.y, { steps: 4 });
+    await page.mouse.up();
+    await page.waitForTimeout(300);
+    expect(await page.locator('canvas.table').getAttribute('data-outcome-hash')).toBeNull();
+    expect(await power.inputValue()).toBe(before);
+    // Pulled back 50 px: played at that power.
+    await page.mouse.move(from.x, from.y, { steps: 3 });
+    await page.mouse.down();
+    await page.mouse.move(from.x - 50, from.y, { steps: 4 });
+    await page.mouse.up();
+    await expect.poll(() => page.locator('canvas.table').getAttribute('data-outcome-hash')).not.toBeNull();
+    expect(Number(await power.inputValue())).toBeCloseTo(pullToSpeed(50 / scale)!, 1);
+    expect(await aimShown.textContent()).toBe(aimed);
+    await expect.poll(() => page.getByRole('button', { name: 'Fast forward' }).isVisible()).toBe(true);
+    await page.context().close();
+  });
+
   it('turns the sound off and on with "Sound", remembered after a reload', async () => {
     const page = await player();
     await page.goto(`${env.server.url}/practice`);
