@@ -6,7 +6,7 @@
 // here with the same physics the server runs).
 import { sampleOutcome, simulate, type Outcome } from '../../shared/physics/index.ts';
 import { placementProblem, type Game } from '../../shared/rules/index.ts';
-import { CANCEL_PX, DECIDE_PX, drawCue, goesBack, MAX_SPEED, MIN_SPEED, onStick, powerFraction, powerWords, pullBack, pullToSpeed, speedToGap } from './cue.ts';
+import { CANCEL_PX, DECIDE_PX, drawCue, fullPull, goesBack, MAX_SPEED, MIN_SPEED, onStick, powerFraction, powerWords, pullBack, pullToSpeed, speedToGap } from './cue.ts';
 import type { TableView } from './view.ts';
 
 export { MAX_SPEED, MIN_SPEED };
@@ -122,7 +122,7 @@ export class Aim {
     // A press on the cue ball (not in hand) or on the stick behind it starts a stroke: pulling
     // back sets the power, and letting go plays it. It does not turn the aim.
     const reach = Math.max(R * 1.2, 12 / this.view.pixelsPerMetre);
-    if (cue && (onBall || onStick(w, cue, this.state.heading, R, speedToGap(this.state.speed), reach))) {
+    if (cue && (onBall || onStick(w, cue, this.state.heading, R, speedToGap(this.state.speed, fullPull(this.view.pixelsPerMetre)), reach))) {
       this.stroke = { from: w, before: this.state.speed, pull: 0 };
       this.held = true;
       this.view.canvas.setPointerCapture(e.pointerId);
@@ -141,12 +141,18 @@ export class Aim {
     this.endStroke(true);
   }
 
+  /** The speed of a pull (m), or null if it is too short to play; full power at 40 cm of table or 150 px, the longer. */
+  private pullSpeed(pull: number): number | null {
+    const ppm = this.view.pixelsPerMetre;
+    return pullToSpeed(pull, CANCEL_PX / ppm, fullPull(ppm));
+  }
+
   /** Ends a stroke: played if it was pulled back far enough (and `play`), else the power goes back. */
   private endStroke(play: boolean): void {
     const s = this.stroke;
     if (!s) return;
     this.stroke = null;
-    const speed = pullToSpeed(s.pull, CANCEL_PX / this.view.pixelsPerMetre);
+    const speed = this.pullSpeed(s.pull);
     this.state.speed = play && speed !== null ? speed : s.before;
     this.change();
     if (play && speed !== null) this.onStroke();
@@ -167,7 +173,7 @@ export class Aim {
     }
     if (this.stroke) {
       this.stroke.pull = pullBack(this.state.heading, this.stroke.from, w);
-      this.state.speed = pullToSpeed(this.stroke.pull, CANCEL_PX / this.view.pixelsPerMetre) ?? this.stroke.before;
+      this.state.speed = this.pullSpeed(this.stroke.pull) ?? this.stroke.before;
       this.change();
       return;
     }
@@ -228,8 +234,8 @@ export class Aim {
     this.drawGuidance(ctx, cue, R);
     // While pulling, the tip follows the pull; else it stands off by the gap the power gives.
     const s = this.stroke;
-    const cancelled = s !== null && pullToSpeed(s.pull, CANCEL_PX / this.view.pixelsPerMetre) === null;
-    drawCue(ctx, cue, this.state.heading, R, s ? Math.min(s.pull, speedToGap(MAX_SPEED)) : speedToGap(this.state.speed), this.state.side);
+    const cancelled = s !== null && this.pullSpeed(s.pull) === null;
+    drawCue(ctx, cue, this.state.heading, R, s ? Math.min(s.pull, speedToGap(MAX_SPEED, fullPull(this.view.pixelsPerMetre))) : speedToGap(this.state.speed, fullPull(this.view.pixelsPerMetre)), this.state.side);
     if (s) this.drawMeter(ctx, cancelled ? null : this.state.speed);
   }
 

@@ -7,6 +7,13 @@ export const MAX_SPEED = 10;
 
 /** The pull (m of table) that gives full power; the gap between tip and ball is the pull. */
 export const MAX_PULL = 0.4;
+/** ...but never less than this many CSS pixels, so that a small table (a phone) keeps fine control. */
+export const FULL_PX = 150;
+
+/** The pull (m) for full power on a table drawn at `pixelsPerMetre`. */
+export function fullPull(pixelsPerMetre: number): number {
+  return Math.max(MAX_PULL, FULL_PX / pixelsPerMetre);
+}
 /** A drag shorter than this many CSS pixels back from where it started cancels the stroke. */
 export const CANCEL_PX = 10;
 /** The stick drawn (m): shorter than a real cue (1.45 m) so that less of it leaves the table. */
@@ -15,17 +22,17 @@ const STICK = 1.2;
 /**
  * The speed (m/s) of a stroke pulled back `pull` metres, or null when the pull is too short to
  * count (`cancel` metres: a release there cancels). Proportional to the pull, from MIN_SPEED to
- * MAX_SPEED at MAX_PULL.
+ * MAX_SPEED at `full` metres.
  */
-export function pullToSpeed(pull: number, cancel = 0): number | null {
+export function pullToSpeed(pull: number, cancel = 0, full = MAX_PULL): number | null {
   if (!(pull > cancel) || !(pull > 0)) return null;
-  const v = (MAX_SPEED * pull) / MAX_PULL;
+  const v = (MAX_SPEED * pull) / full;
   return Math.round(Math.min(MAX_SPEED, Math.max(MIN_SPEED, v)) * 100) / 100;
 }
 
 /** The gap between the tip and the ball at a speed: the pull that gives that speed. */
-export function speedToGap(speed: number): number {
-  return (MAX_PULL * Math.min(MAX_SPEED, Math.max(0, speed))) / MAX_SPEED;
+export function speedToGap(speed: number, full = MAX_PULL): number {
+  return (full * Math.min(MAX_SPEED, Math.max(0, speed))) / MAX_SPEED;
 }
 
 /** How far `to` lies behind `from` along the stroke (opposite the heading), in metres; never below 0. */

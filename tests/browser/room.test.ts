@@ -7,7 +7,7 @@ import { ProtocolClient } from '../../bots/client.ts';
 import { tableSpec } from '../../shared/physics/index.ts';
 import type { ServerMessage } from '../../shared/protocol/index.ts';
 import { cueBallId, newGame } from '../../shared/rules/index.ts';
-import { pullToSpeed } from '../../client/table/cue.ts';
+import { fullPull, pullToSpeed } from '../../client/table/cue.ts';
 import { RAIL } from '../../client/table/draw.ts';
 import { chromiumAvailable, serverAndChromium } from '../support/browser.ts';
 
@@ -232,12 +232,12 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
     await a.mouse.down();
     await a.mouse.move(from.x - 60, from.y + 10, { steps: 4 });
     // While pulling, the power meter reads the pull.
-    expect(await a.getByLabel('Power', { exact: true }).inputValue()).toBe(String(pullToSpeed(60 / scale)));
+    expect(await a.getByLabel('Power', { exact: true }).inputValue()).toBe(String(pullToSpeed(60 / scale, 0, fullPull(scale))));
     await a.mouse.move(from.x - 120, from.y + 15, { steps: 4 });
     await a.mouse.up();
     await expect.poll(() => shots.length, { timeout: 10_000 }).toBe(1);
     const shot = shots[0]!;
-    expect(shot.shot.speed).toBeCloseTo(pullToSpeed(120 / scale)!, 1);
+    expect(shot.shot.speed).toBeCloseTo(pullToSpeed(120 / scale, 0, fullPull(scale))!, 1);
     expect(shot.shot.speed).toBeGreaterThan(6);
     expect(shot.shot.heading).toBe(0); // the drag did not turn the cue
     expect(shot.cueBall).toBeUndefined(); // nor move the ball in hand
@@ -294,10 +294,31 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
     await page.mouse.move(from.x - 50, from.y, { steps: 4 });
     await page.mouse.up();
     await expect.poll(() => page.locator('canvas.table').getAttribute('data-outcome-hash')).not.toBeNull();
-    expect(Number(await power.inputValue())).toBeCloseTo(pullToSpeed(50 / scale)!, 1);
+    expect(Number(await power.inputValue())).toBeCloseTo(pullToSpeed(50 / scale, 0, fullPull(scale))!, 1);
     expect(await aimShown.textContent()).toBe(aimed);
     await expect.poll(() => page.getByRole('button', { name: 'Fast forward' }).isVisible()).toBe(true);
     await page.context().close();
+  });
+
+  it('practice: a touch pulled back from the cue ball plays too', async () => {
+    const ctx = await env.browser.newContext({ viewport: { width: 844, height: 390 }, hasTouch: true });
+    const page = await ctx.newPage();
+    await page.goto(`${env.server.url}/practice`);
+    const g = newGame('practice', ['me'], { layout: 'nineball' });
+    const box = (await page.locator('canvas.table').boundingBox())!;
+    const scale = box.width / (tableSpec(g.table).length + 2 * RAIL);
+    const cue = g.balls.find((x) => x.id === 'cue')!;
+    const from = { x: box.x + box.width / 2 + cue.x * scale, y: box.y + box.height / 2 - cue.y * scale };
+    const cdp = await ctx.newCDPSession(page);
+    const touch = (type: 'touchStart' | 'touchMove' | 'touchEnd', x = 0, y = 0) =>
+      cdp.send('Input.dispatchTouchEvent', { type, touchPoints: type === 'touchEnd' ? [] : [{ x, y }] });
+    await touch('touchStart', from.x, from.y);
+    for (let i = 1; i <= 6; i++) await touch('touchMove', from.x - 10 * i, from.y);
+    await touch('touchEnd');
+    await expect.poll(() => page.locator('canvas.table').getAttribute('data-outcome-hash')).not.toBeNull();
+    expect(Number(await page.getByLabel('Power', { exact: true }).inputValue())).toBeCloseTo(pullToSpeed(60 / scale, 0, fullPull(scale))!, 1);
+    expect(await page.getByLabel('Aim', { exact: true }).textContent()).toBe('0.00°');
+    await ctx.close();
   });
 
   it('turns the sound off and on with "Sound", remembered after a reload', async () => {

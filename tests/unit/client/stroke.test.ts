@@ -3,7 +3,7 @@
 // spin reads in words.
 import { describe, expect, it } from 'vitest';
 import { spinWords } from '../../../client/table/controls.ts';
-import { goesBack, MAX_PULL, MAX_SPEED, MIN_SPEED, onStick, powerWords, pullBack, pullToSpeed, speedToGap } from '../../../client/table/cue.ts';
+import { fullPull, goesBack, MAX_PULL, MAX_SPEED, MIN_SPEED, onStick, powerWords, pullBack, pullToSpeed, speedToGap } from '../../../client/table/cue.ts';
 import { nextPace } from '../../../client/table/pace.ts';
 
 describe('the stroke', () => {
@@ -15,6 +15,13 @@ describe('the stroke', () => {
     expect(pullToSpeed(0.001)).toBe(MIN_SPEED);
     // The drawn gap is the pull that gives the speed.
     for (const v of [0.5, 2.5, 7, MAX_SPEED]) expect(pullToSpeed(speedToGap(v))).toBeCloseTo(v, 9);
+  });
+
+  it('takes full power at 40 cm of table, or 150 px where the table is drawn small', () => {
+    expect(fullPull(400)).toBe(MAX_PULL);
+    expect(fullPull(150)).toBe(1);
+    expect(pullToSpeed(0.5, 0, fullPull(150))).toBe(MAX_SPEED / 2);
+    expect(speedToGap(MAX_SPEED / 2, 1)).toBe(0.5);
   });
 
   it('cancels a pull no longer than the cancel distance, or none', () => {
