@@ -105,9 +105,17 @@ export function strokeControls(aim: Aim, onShoot: () => void): Controls {
     drawSpin();
     aim.change();
   };
-  spin.addEventListener('pointerdown', (e) => {
+  const spinAt = (e: PointerEvent) => {
     const r = spin.getBoundingClientRect();
     setSpin(((e.clientX - r.left) / r.width - 0.5) * 2, -((e.clientY - r.top) / r.height - 0.5) * 2);
+  };
+  // A press puts the tip there; dragging moves it.
+  spin.addEventListener('pointerdown', (e) => {
+    spin.setPointerCapture(e.pointerId);
+    spinAt(e);
+  });
+  spin.addEventListener('pointermove', (e) => {
+    if (e.buttons !== 0) spinAt(e);
   });
   spin.addEventListener('keydown', (e) => {
     const step: Record<string, [number, number]> = { ArrowLeft: [-0.05, 0], ArrowRight: [0.05, 0], ArrowUp: [0, 0.05], ArrowDown: [0, -0.05] };
