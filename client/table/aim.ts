@@ -49,7 +49,12 @@ export class Aim {
     c.addEventListener('pointerdown', (e) => this.pointerDown(e));
     c.addEventListener('pointermove', (e) => this.pointerMove(e));
     c.addEventListener('pointerup', (e) => this.pointerUp(e));
-    c.addEventListener('pointercancel', () => this.endStroke(false));
+    c.addEventListener('pointercancel', () => {
+      // (A touch taken over by the browser, say for a scroll: nothing is played.)
+      this.dragging = false;
+      this.pressed = null;
+      this.endStroke(false);
+    });
     c.addEventListener('keydown', (e) => this.key(e));
   }
 
@@ -78,10 +83,6 @@ export class Aim {
     this.stroke = null;
   }
 
-  /** Whether a stroke is being pulled back (its power shown on the table). */
-  get stroking(): boolean {
-    return this.stroke !== null;
-  }
 
   /** The cue ball's place: dragged in hand, or where the game has it. */
   cuePosition(): { x: number; y: number } | null {
