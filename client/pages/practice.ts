@@ -24,6 +24,8 @@ import { storedToken } from '../net/session.ts';
 import { Aim } from '../table/aim.ts';
 import { Animator } from '../table/animator.ts';
 import { spaceShoots, strokeControls } from '../table/controls.ts';
+import { Pace } from '../table/pace.ts';
+import { SoundPlayer, soundToggle } from '../table/sound.ts';
 import { TableView } from '../table/view.ts';
 import { inWords } from '../verdict.ts';
 
@@ -40,7 +42,7 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
   const info = h('p', { role: 'status', className: 'verdict' });
   const tableBox = h('div', { className: 'table-box' });
   const undoButton = h('button', { type: 'button', onclick: () => doUndo() }, 'Undo');
-  const replayButton = h('button', { type: 'button', onclick: () => last && void animator.play(last) }, 'Replay');
+  const replayButton = h('button', { type: 'button', onclick: () => last && void pace.play(last) }, 'Replay');
   const submit = h('button', { type: 'button', onclick: () => void send() }, 'Submit run');
   const start = h('button', { type: 'button', onclick: () => reset() }, 'New table');
   root.append(
@@ -58,6 +60,10 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
   let view: TableView | null = null;
   let aim: Aim | null = null;
   let animator!: Animator;
+  // Every shot animates through the pace (fast forward) with its sounds.
+  const sound = new SoundPlayer();
+  const pace = new Pace({ play: (o, speed, from) => animator.play(o, speed, from) }, sound);
+  tableBox.before(h('div', { className: 'table-bar' }, soundToggle(), pace.button));
   let controls: ReturnType<typeof strokeControls> | null = null;
   let game: Game;
   let last: Outcome | null = null;
@@ -155,7 +161,7 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
       run.shots.push({ shot, ...(s.cueBall ? { cueBall: s.cueBall } : {}) });
       if (!v.foul) run.score += run.kind === 'nineball' ? v.potted.length : (v.points[ME] ?? 0);
     }
-    void animator.play(played.outcome).then(() => {
+    void pace.play(played.outcome).then(() => {
       busy = false;
       game = played.game;
       const over = run && (game.turn !== ME || game.winner !== null);
@@ -244,6 +250,8 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
   return () => {
     started++; // a seed still on its way is dropped
     stopSpace();
+    pace.destroy();
+    sound.destroy();
     animator?.stop();
     view?.destroy();
   };

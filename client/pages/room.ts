@@ -10,6 +10,8 @@ import type { PageContext } from '../main.ts';
 import { Aim, type Guidance } from '../table/aim.ts';
 import { Animator } from '../table/animator.ts';
 import { spaceShoots, strokeControls } from '../table/controls.ts';
+import { Pace } from '../table/pace.ts';
+import { SoundPlayer, soundToggle } from '../table/sound.ts';
 import { TableView } from '../table/view.ts';
 import { inWords } from '../verdict.ts';
 
@@ -63,6 +65,10 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     chatText.value = '';
   });
   root.append(h('section', { className: 'room', 'aria-label': 'Room' }, title, banner, players, clock, tableBox, declarations, actions, verdict, chatLog, chat));
+  // Every shot animates through the pace (fast forward) with its sounds.
+  const sound = new SoundPlayer();
+  const pace = new Pace({ play: (o, speed, from) => animator!.play(o, speed, from) }, sound);
+  tableBox.before(h('div', { className: 'table-bar' }, soundToggle(), pace.button));
 
   const me = () => session.player?.id;
   const seated = () => !!room?.players.some((p) => p.id === me());
@@ -253,7 +259,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
       },
       () => null,
     );
-    const shown = animator!.play(played.outcome);
+    const shown = pace.play(played.outcome);
     void Promise.all([reply, shown]).then(([m]) => {
       busy = false;
       render();
@@ -290,7 +296,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     if (busy) return;
     busy = true;
     aim?.disable();
-    while (animations.length > 0) await animator!.play(animations.shift()!);
+    while (animations.length > 0) await pace.play(animations.shift()!);
     busy = false;
     render();
   }
@@ -353,6 +359,8 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     stopStatus();
     stopSpace();
     clearInterval(tick);
+    pace.destroy();
+    sound.destroy();
     animator?.stop();
     view?.destroy();
     session.forget(`room:${id}`);

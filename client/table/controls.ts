@@ -1,7 +1,9 @@
-// The stroke's controls beside the table: power, the aim's heading, a spin picker (the tip's
-// offset on the ball, kept inside the miscue limit) and the Shoot button; space shoots too.
+// The stroke's controls beside the table: a power meter (a range input that reads in words), the
+// aim's heading, the spin picker (where the tip strikes the drawn cue ball, kept inside the
+// miscue limit) and the Shoot button; space shoots too, and so does a stroke pulled on the table.
 import { h } from '../dom.ts';
 import { MAX_SPEED, MIN_SPEED, type Aim } from './aim.ts';
+import { powerFraction, powerWords } from './cue.ts';
 
 /** The largest tip offset offered: inside the miscue limit of 0.5 R. */
 const MAX_OFFSET = 0.45;
@@ -16,31 +18,80 @@ export interface Controls {
 }
 
 export function strokeControls(aim: Aim, onShoot: () => void): Controls {
-  const power = h('input', { type: 'range', min: MIN_SPEED, max: MAX_SPEED, step: 0.05, value: aim.state.speed, 'aria-label': 'Power (m/s)' });
+  aim.onStroke = onShoot;
+  const power = h('input', { type: 'range', min: MIN_SPEED, max: MAX_SPEED, step: 0.05, value: aim.state.speed, 'aria-label': 'Power' });
   // (Outputs are live regions by default; these change with every pointer move, so they are quiet.)
-  const powerText = h('output', { 'aria-live': 'off' }, `${aim.state.speed.toFixed(2)} m/s`);
+  const powerText = h('output', { 'aria-live': 'off', className: 'power-words' });
+  const showPower = () => {
+    const v = aim.state.speed;
+    power.value = String(v);
+    power.setAttribute('aria-valuetext', `${powerWords(v)} (${v.toFixed(2)} m/s)`);
+    powerText.textContent = `${powerWords(v)} · ${v.toFixed(2)} m/s`;
+    // The range's filled part is the meter: green when soft to red at full power.
+    power.style.accentColor = `hsl(${Math.round(120 - 120 * powerFraction(v))}, 70%, 45%)`;
+  };
   power.addEventListener('input', () => {
     aim.state.speed = Number(power.value);
-    powerText.textContent = `${aim.state.speed.toFixed(2)} m/s`;
+    showPower();
     aim.change();
   });
-  const spin = h('canvas', { width: 72, height: 72, className: 'spin', tabindex: 0, 'aria-label': 'Spin: click where the tip strikes the ball, or use the arrow keys', role: 'img' });
+  // The tip's place on the cue ball, as the player sees it from behind: a 2D slider.
+  const spinHint = h('span', { className: 'note spin-words', id: `spin-words-${++ids}` });
+  const spin = h('canvas', {
+    width: 144,
+    height: 144,
+    className: 'spin',
+    tabindex: 0,
+    role: 'slider',
+    'aria-label': 'Spin',
+    'aria-valuemin': 0,
+    'aria-valuemax': 100,
+    'aria-describedby': spinHint.id,
+    title: 'Click where the tip strikes the cue ball, or use the arrow keys',
+  });
   const drawSpin = () => {
     const ctx = spin.getContext('2d');
     if (!ctx) return;
-    ctx.clearRect(0, 0, 72, 72);
-    ctx.fillStyle = '#f4f1e8';
+    // Drawn at twice its CSS size, for sharp edges on high-DPI screens.
+    const c = 72;
+    const r = 66;
+    ctx.clearRect(0, 0, 144, 144);
+    const shade = ctx.createRadialGradient(c - r * 0.35, c - r * 0.4, r * 0.1, c, c, r);
+    shade.addColorStop(0, '#ffffff');
+    shade.addColorStop(0.6, '#ece8dc');
+    shade.addColorStop(1, '#b9b3a2');
+    ctx.fillStyle = shade;
     ctx.beginPath();
-    ctx.arc(36, 36, 34, 0, 2 * Math.PI);
+    ctx.arc(c, c, r, 0, 2 * Math.PI);
     ctx.fill();
-    ctx.strokeStyle = '#c44';
+    // The miscue limit, and the cross through the centre.
+    ctx.strokeStyle = 'rgba(180,50,40,0.8)';
+    ctx.lineWidth = 2;
+    ctx.setLineDash([6, 5]);
     ctx.beginPath();
-    ctx.arc(36, 36, 34 * MAX_OFFSET, 0, 2 * Math.PI);
+    ctx.arc(c, c, r * MAX_OFFSET, 0, 2 * Math.PI);
     ctx.stroke();
-    ctx.fillStyle = '#2e5cb8';
+    ctx.setLineDash([]);
+    ctx.strokeStyle = 'rgba(0,0,0,0.18)';
     ctx.beginPath();
-    ctx.arc(36 + 34 * aim.state.side, 36 - 34 * aim.state.top, 5, 0, 2 * Math.PI);
+    ctx.moveTo(c - r, c);
+    ctx.lineTo(c + r, c);
+    ctx.moveTo(c, c - r);
+    ctx.lineTo(c, c + r);
+    ctx.stroke();
+    // The tip: a chalked disc about the size of a real tip on the ball.
+    const tx = c + r * aim.state.side;
+    const ty = c - r * aim.state.top;
+    ctx.fillStyle = '#3d7fd9';
+    ctx.strokeStyle = '#123';
+    ctx.beginPath();
+    ctx.arc(tx, ty, r * 0.22, 0, 2 * Math.PI);
     ctx.fill();
+    ctx.stroke();
+    const words = spinWords(aim.state.side, aim.state.top);
+    spinHint.textContent = words;
+    spin.setAttribute('aria-valuetext', words);
+    spin.setAttribute('aria-valuenow', String(Math.round((Math.hypot(aim.state.side, aim.state.top) / MAX_OFFSET) * 100)));
   };
   /** Puts the tip at (side, top), pulled back inside the miscue limit. */
   const setSpin = (side: number, top: number) => {
@@ -54,9 +105,17 @@ export function strokeControls(aim: Aim, onShoot: () => void): Controls {
     drawSpin();
     aim.change();
   };
-  spin.addEventListener('pointerdown', (e) => {
+  const spinAt = (e: PointerEvent) => {
     const r = spin.getBoundingClientRect();
     setSpin(((e.clientX - r.left) / r.width - 0.5) * 2, -((e.clientY - r.top) / r.height - 0.5) * 2);
+  };
+  // A press puts the tip there; dragging moves it.
+  spin.addEventListener('pointerdown', (e) => {
+    spin.setPointerCapture(e.pointerId);
+    spinAt(e);
+  });
+  spin.addEventListener('pointermove', (e) => {
+    if (e.buttons !== 0) spinAt(e);
   });
   spin.addEventListener('keydown', (e) => {
     const step: Record<string, [number, number]> = { ArrowLeft: [-0.05, 0], ArrowRight: [0.05, 0], ArrowUp: [0, 0.05], ArrowDown: [0, -0.05] };
@@ -73,8 +132,16 @@ export function strokeControls(aim: Aim, onShoot: () => void): Controls {
     // Hundredths: a fine key step (Shift) turns the cue by about 0.05°.
     aimText.textContent = `${(((deg % 360) + 360) % 360).toFixed(2)}°`;
   };
-  const element = h('div', { className: 'controls' }, h('label', {}, 'Power ', power, ' ', powerText), h('span', {}, 'Aim ', aimText), spin, shoot);
+  const element = h(
+    'div',
+    { className: 'controls' },
+    h('label', { className: 'power' }, 'Power ', power, ' ', powerText),
+    h('span', {}, 'Aim ', aimText),
+    h('span', { className: 'spin-box' }, h('span', { 'aria-hidden': 'true' }, 'Spin'), spin, spinHint),
+    shoot,
+  );
   showAim();
+  showPower();
   drawSpin();
   return {
     element,
@@ -84,12 +151,23 @@ export function strokeControls(aim: Aim, onShoot: () => void): Controls {
       power.disabled = !on;
     },
     sync() {
-      power.value = String(aim.state.speed);
-      powerText.textContent = `${aim.state.speed.toFixed(2)} m/s`;
+      showPower();
       showAim();
       drawSpin();
     },
   };
+}
+
+let ids = 0;
+
+/** Where the tip strikes, in words: "Centre", "Top 20%, left 10%" (of the ball's radius). */
+export function spinWords(side: number, top: number): string {
+  const pct = (v: number) => `${Math.round(Math.abs(v) * 100)}%`;
+  const parts: string[] = [];
+  if (Math.abs(top) >= 0.005) parts.push(`${top > 0 ? 'top (follow)' : 'bottom (draw)'} ${pct(top)}`);
+  if (Math.abs(side) >= 0.005) parts.push(`${side > 0 ? 'right' : 'left'} side ${pct(side)}`);
+  const text = parts.length === 0 ? 'centre ball' : parts.join(', ');
+  return text[0]!.toUpperCase() + text.slice(1);
 }
 
 /** Space shoots when the table or the page has the focus (not while typing). */

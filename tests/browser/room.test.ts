@@ -7,6 +7,8 @@ import { ProtocolClient } from '../../bots/client.ts';
 import { tableSpec } from '../../shared/physics/index.ts';
 import type { ServerMessage } from '../../shared/protocol/index.ts';
 import { cueBallId, newGame } from '../../shared/rules/index.ts';
+import { fullPull, pullToSpeed } from '../../client/table/cue.ts';
+import { RAIL } from '../../client/table/draw.ts';
 import { chromiumAvailable, serverAndChromium } from '../support/browser.ts';
 
 describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
@@ -109,7 +111,7 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
     await c.goto(`${env.server.url}/room/${id}`);
     await c.waitForSelector('canvas.table');
     expect(await c.getByRole('button', { name: 'Shoot' }).isVisible()).toBe(false);
-    expect(await c.getByLabel('Power (m/s)').isVisible()).toBe(false);
+    expect(await c.getByLabel('Power', { exact: true }).isVisible()).toBe(false);
     await a.context().close();
     await b.context().close();
     await c.context().close();
@@ -194,6 +196,149 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
     await page.mouse.up();
     await expect.poll(() => page.locator('.verdict').textContent()).toBe('The cue ball cannot go there: it must lie on the cloth, clear of the other balls.');
     expect(await pixel(open)).toEqual(cloth);
+    await page.context().close();
+  });
+
+  it('plays a drag pulled back from the cue ball with the drag\'s power, broadcast and hash-equal; a watcher fast-forwards it to the same end', async () => {
+    const { a, b, id } = await twoPlayers();
+    const watcher = await ProtocolClient.connect(`${env.server.url.replace('http', 'ws')}/ws`);
+    await watcher.request({ type: 'hello', name: 'Watch-drag' });
+    const shots: Extract<ServerMessage, { type: 'shot' }>[] = [];
+    const arrived: number[] = [];
+    watcher.onMessage((m) => {
+      if (m.type !== 'shot') return;
+      shots.push(m);
+      arrived.push(Date.now());
+    });
+    await watcher.request({ type: 'watch', room: id });
+    await expect.poll(() => a.getByRole('button', { name: 'Shoot' }).isEnabled(), { timeout: 10_000 }).toBe(true);
+    // The break: the cue ball in hand in the kitchen, aimed up the table (heading 0) at the rack.
+    const g = newGame('nineball', ['x', 'y']);
+    const cue = g.balls.find((x) => x.id === cueBallId(g))!;
+    const box = (await a.locator('canvas.table').boundingBox())!;
+    const scale = box.width / (tableSpec(g.table).length + 2 * RAIL);
+    const from = { x: box.x + box.width / 2 + cue.x * scale, y: box.y + box.height / 2 - cue.y * scale };
+    const aimShown = a.getByLabel('Aim', { exact: true });
+    const aimed = await aimShown.textContent();
+    // Pulled back less than the cancel distance and let go: nothing is played, the aim holds.
+    await a.mouse.move(from.x, from.y);
+    await a.mouse.down();
+    await a.mouse.move(from.x - 8, from.y, { steps: 4 });
+    await a.mouse.up();
+    await a.waitForTimeout(500);
+    expect(shots).toHaveLength(0);
+    // Pulled back 120 px, a little off the line (only the pull along it counts), and let go: played.
+    await a.mouse.move(from.x, from.y);
+    await a.mouse.down();
+    await a.mouse.move(from.x - 60, from.y + 10, { steps: 4 });
+    // While pulling, the power meter reads the pull.
+    expect(await a.getByLabel('Power', { exact: true }).inputValue()).toBe(String(pullToSpeed(60 / scale, 0, fullPull(scale))));
+    await a.mouse.move(from.x - 120, from.y + 15, { steps: 4 });
+    await a.mouse.up();
+    await expect.poll(() => shots.length, { timeout: 10_000 }).toBe(1);
+    const shot = shots[0]!;
+    expect(shot.shot.speed).toBeCloseTo(pullToSpeed(120 / scale, 0, fullPull(scale))!, 1);
+    expect(shot.shot.speed).toBeGreaterThan(6);
+    expect(shot.shot.heading).toBe(0); // the drag did not turn the cue
+    expect(shot.cueBall).toBeUndefined(); // nor move the ball in hand
+    expect(await aimShown.textContent()).toBe(aimed);
+    const hashOf = (p: Page) => p.locator('canvas.table').getAttribute('data-outcome-hash');
+    await expect.poll(() => hashOf(a)).toBe(shot.outcome.hash);
+    await expect.poll(() => hashOf(b)).toBe(shot.outcome.hash);
+    // The opponent watches it at x2, x4, then skips to its end: the same end, long before its time.
+    const ff = b.getByRole('button', { name: 'Fast forward' });
+    await expect.poll(() => ff.isVisible(), { timeout: 5_000 }).toBe(true);
+    expect(await ff.textContent()).toBe('Fast forward ×2');
+    await ff.click();
+    expect(await ff.textContent()).toBe('Fast forward ×4');
+    await b.keyboard.press('f');
+    expect(await ff.textContent()).toBe('Fast forward to the end');
+    await ff.click();
+    await expect.poll(() => ff.isVisible(), { timeout: 2_000 }).toBe(false);
+    expect(Date.now() - arrived[0]!).toBeLessThan(shot.outcome.duration * 1000);
+    expect(await hashOf(b)).toBe(shot.outcome.hash);
+    expect(await b.evaluate(() => (window as unknown as { baizeMismatches: { mismatches: number } }).baizeMismatches.mismatches)).toBe(0);
+    // The shooter's own page lets it play out; its button goes once the balls stop.
+    await expect.poll(() => a.getByRole('button', { name: 'Fast forward' }).isVisible(), { timeout: 30_000 }).toBe(false);
+    await watcher.close();
+    await a.context().close();
+    await b.context().close();
+  }, 60_000);
+
+  it('practice: a drag pulled back from the cue ball plays at its power without turning the cue; pulled forward, it cancels', async () => {
+    const page = await player();
+    await page.goto(`${env.server.url}/practice`);
+    const g = newGame('practice', ['me'], { layout: 'nineball' });
+    const box = (await page.locator('canvas.table').boundingBox())!;
+    const scale = box.width / (tableSpec(g.table).length + 2 * RAIL);
+    const cue = g.balls.find((x) => x.id === 'cue')!;
+    const from = { x: box.x + box.width / 2 + cue.x * scale, y: box.y + box.height / 2 - cue.y * scale };
+    // Aim at the rack and hold it with a click; then the pointer goes to the cue ball.
+    const rack = g.balls.find((x) => x.id === '1')!;
+    await page.mouse.click(box.x + box.width / 2 + rack.x * scale, box.y + box.height / 2 - rack.y * scale);
+    const aimShown = page.getByLabel('Aim', { exact: true });
+    const aimed = await aimShown.textContent();
+    const power = page.getByLabel('Power', { exact: true });
+    const before = await power.inputValue();
+    // Pulled forward (towards the aim) and let go: nothing played, the power as it was.
+    await page.mouse.move(from.x, from.y, { steps: 3 });
+    await page.mouse.down();
+    await page.mouse.move(from.x + 80, from.y, { steps: 4 });
+    await page.mouse.up();
+    await page.waitForTimeout(300);
+    expect(await page.locator('canvas.table').getAttribute('data-outcome-hash')).toBeNull();
+    expect(await power.inputValue()).toBe(before);
+    // Pulled back 50 px: played at that power.
+    await page.mouse.move(from.x, from.y, { steps: 3 });
+    await page.mouse.down();
+    await page.mouse.move(from.x - 50, from.y, { steps: 4 });
+    await page.mouse.up();
+    await expect.poll(() => page.locator('canvas.table').getAttribute('data-outcome-hash')).not.toBeNull();
+    expect(Number(await power.inputValue())).toBeCloseTo(pullToSpeed(50 / scale, 0, fullPull(scale))!, 1);
+    expect(await aimShown.textContent()).toBe(aimed);
+    await expect.poll(() => page.getByRole('button', { name: 'Fast forward' }).isVisible()).toBe(true);
+    await page.context().close();
+  });
+
+  it('practice: a touch pulled back from the cue ball plays too', async () => {
+    const ctx = await env.browser.newContext({ viewport: { width: 844, height: 390 }, hasTouch: true });
+    const page = await ctx.newPage();
+    await page.goto(`${env.server.url}/practice`);
+    const g = newGame('practice', ['me'], { layout: 'nineball' });
+    const box = (await page.locator('canvas.table').boundingBox())!;
+    const scale = box.width / (tableSpec(g.table).length + 2 * RAIL);
+    const cue = g.balls.find((x) => x.id === 'cue')!;
+    const from = { x: box.x + box.width / 2 + cue.x * scale, y: box.y + box.height / 2 - cue.y * scale };
+    const cdp = await ctx.newCDPSession(page);
+    const touch = (type: 'touchStart' | 'touchMove' | 'touchEnd', x = 0, y = 0) =>
+      cdp.send('Input.dispatchTouchEvent', { type, touchPoints: type === 'touchEnd' ? [] : [{ x, y }] });
+    await touch('touchStart', from.x, from.y);
+    for (let i = 1; i <= 6; i++) await touch('touchMove', from.x - 10 * i, from.y);
+    await touch('touchEnd');
+    await expect.poll(() => page.locator('canvas.table').getAttribute('data-outcome-hash')).not.toBeNull();
+    expect(Number(await page.getByLabel('Power', { exact: true }).inputValue())).toBeCloseTo(pullToSpeed(60 / scale, 0, fullPull(scale))!, 1);
+    expect(await page.getByLabel('Aim', { exact: true }).textContent()).toBe('0.00°');
+    await ctx.close();
+  });
+
+  it('turns the sound off and on with "Sound", remembered after a reload', async () => {
+    const page = await player();
+    await page.goto(`${env.server.url}/practice`);
+    const sound = page.getByRole('button', { name: 'Sound', exact: true });
+    expect(await sound.getAttribute('aria-pressed')).toBe('true');
+    await sound.click();
+    expect(await sound.getAttribute('aria-pressed')).toBe('false');
+    await page.reload();
+    expect(await page.getByRole('button', { name: 'Sound', exact: true }).getAttribute('aria-pressed')).toBe('false');
+    // The room has it too, and the same choice.
+    await page.goto(`${env.server.url}/`);
+    const id = await openTable(page);
+    const inRoom = page.getByRole('button', { name: 'Sound', exact: true });
+    expect(await inRoom.getAttribute('aria-pressed')).toBe('false');
+    await inRoom.click();
+    expect(await inRoom.getAttribute('aria-pressed')).toBe('true');
+    await page.goto(`${env.server.url}/room/${id}`);
+    expect(await page.getByRole('button', { name: 'Sound', exact: true }).getAttribute('aria-pressed')).toBe('true');
     await page.context().close();
   });
 
