@@ -68,7 +68,7 @@ export function mountLobby(root: HTMLElement, ctx: PageContext): () => void {
   root.append(
     h('section', { 'aria-label': 'Lobby' }, h('h2', {}, 'Lobby'), rooms, more, note),
     h('section', { 'aria-label': 'Open a table' }, h('h2', {}, 'Open a table'), create),
-    h('section', { 'aria-label': 'Players' }, h('h2', {}, 'Online'), online, rename, h('p', {}, link('/practice', 'Practise alone'), ' · ', link('/leaderboard', 'Leaderboard'))),
+    h('section', { 'aria-label': 'Players' }, h('h2', {}, 'Online'), online, rename, h('p', {}, link('/practice', 'Practise alone'), ' · ', link('/leaderboard', 'Leaderboard'), ' · ', link('/help', 'How to play'))),
   );
 
   const render = (list: readonly LobbyRoom[], notListed: number) => {
