@@ -42,7 +42,7 @@ export function mountHelp(root: HTMLElement): () => void {
       ),
       section(
         'Snooker',
-        p('Fifteen reds and six colours. While reds are on the table you play a red (1 point, and any number of reds may drop on one stroke), then a colour of your choice (yellow 2, green 3, brown 4, blue 5, pink 6, black 7), then a red again. A potted colour comes back to its spot while reds remain. When the reds are gone the colours are taken in order, yellow to black, and stay down.'),
+        p('Fifteen reds and six colours. While reds are on the table you play a red (1 point, and any number of reds may drop on one stroke), then a colour of your choice (yellow 2, green 3, brown 4, blue 5, pink 6, black 7), then a red again. A potted colour comes back to its spot as long as reds remain, and once more for the colour played after the last red. Then the colours are taken in order, yellow to black, and stay down.'),
         ul(
           'Name the colour you are playing after a red, or let the referee take the colour you hit first.',
           'Fouls: no ball hit, the wrong ball first, a ball not on potted, the cue ball potted (an in-off). A foul gives the opponent the value of the ball on or of the highest ball involved, at least 4.',
