@@ -1,7 +1,9 @@
 // The browser client's entry point: one page per path, a guest session over the WebSocket, and
 // links handled here so the page never reloads.
+import { pageOf, type PageName } from '../shared/protocol/pages.ts';
 import { h } from './dom.ts';
 import { Session } from './net/session.ts';
+import { mountHelp } from './pages/help.ts';
 import { mountLab } from './pages/lab.ts';
 import { mountLeaderboard } from './pages/leaderboard.ts';
 import { mountLobby } from './pages/lobby.ts';
@@ -16,15 +18,17 @@ export interface PageContext {
 }
 type Page = (root: HTMLElement, ctx: PageContext, param: string) => () => void;
 
-const ROUTES: [RegExp, Page][] = [
-  [/^\/$/, mountLobby],
-  [/^\/room\/([^/]+)$/, mountRoom],
-  [/^\/practice$/, mountPractice],
-  [/^\/leaderboard$/, mountLeaderboard],
-  [/^\/player\/([^/]+)$/, mountPlayer],
-  [/^\/match\/([^/]+)$/, mountMatch],
-  [/^\/lab$/, mountLab],
-];
+/** Each page's mount; the paths are in shared/protocol/pages.ts, which the server serves too. */
+const MOUNTS: Readonly<Record<PageName, Page>> = {
+  lobby: mountLobby,
+  room: mountRoom,
+  practice: mountPractice,
+  leaderboard: mountLeaderboard,
+  player: mountPlayer,
+  match: mountMatch,
+  lab: mountLab,
+  help: mountHelp,
+};
 
 const root = document.getElementById('app')!;
 const session = new Session();
@@ -33,13 +37,10 @@ let unmount: (() => void) | undefined;
 function route(): void {
   unmount?.();
   root.replaceChildren();
-  const path = location.pathname;
-  for (const [re, page] of ROUTES) {
-    const m = re.exec(path);
-    if (m) {
-      unmount = page(root, { session, navigate }, decodeURIComponent(m[1] ?? ''));
-      return;
-    }
+  const page = pageOf(location.pathname);
+  if (page) {
+    unmount = MOUNTS[page.name](root, { session, navigate }, decodeURIComponent(page.param));
+    return;
   }
   root.append(h('p', {}, 'No such page. '), h('a', { href: '/', 'data-link': true }, 'Back to the lobby'));
   unmount = undefined;

@@ -2,10 +2,8 @@
 // (the client's page for a browser, JSON otherwise).
 import type { IncomingMessage, ServerResponse } from 'node:http';
 import type { Api } from './api/routes.ts';
+import { pageOf } from '../shared/protocol/pages.ts';
 import type { StaticFile } from './static-files.ts';
-
-/** Paths of the client's pages: the lobby, a room, practice, the leaderboard, a player, a match, the lab. */
-const PAGE = /^\/(?:|practice|leaderboard|lab|(?:room|player|match)\/[A-Za-z0-9_-]{1,64})$/;
 
 export interface Health {
   readonly ok: boolean;
@@ -39,7 +37,7 @@ export function createRequestHandler(files: ReadonlyMap<string, StaticFile>, hea
       return;
     }
     // The client's pages are one document; its router shows the page of the path.
-    const file = files.get(PAGE.test(path) ? '/' : path);
+    const file = files.get(pageOf(path) ? '/' : path);
     if (file) {
       send(res, 200, file.contentType, file.body);
       return;

@@ -70,8 +70,8 @@ function reboundFigure(
   angleMax: number,
 ): string {
   return figureSvg(title, caption, [
-    { title: 'Rebound speed', xLabel: 'incidence α (°)', yLabel: 'rebound speed (m/s)', series: lines.map((l) => l.speed), x: [0, 90], legend: 'bl', marks: marks.speed },
-    { title: 'Rebound angle', xLabel: 'incidence α (°)', yLabel: 'rebound angle β (°, from the cushion)', series: lines.map((l) => l.angle), x: [0, 90], y: [0, angleMax], legend: 'tl', marks: marks.angle },
+    { title: 'Rebound speed', xLabel: 'incidence α (°)', yLabel: 'rebound speed (m/s)', series: lines.map((l) => l.speed), x: [0, 90], marks: marks.speed },
+    { title: 'Rebound angle', xLabel: 'incidence α (°)', yLabel: 'rebound angle β (°, from the cushion)', series: lines.map((l) => l.angle), x: [0, 90], y: [0, angleMax], marks: marks.angle },
   ]);
 }
 

@@ -17,8 +17,11 @@ export interface Panel {
   /** Optional fixed ranges; otherwise taken from the data with nice rounding. */
   readonly x?: readonly [number, number];
   readonly y?: readonly [number, number];
-  /** Legend corner inside the plot: top/bottom, left/right (default top right). */
-  readonly legend?: 'tl' | 'tr' | 'bl' | 'br';
+  /**
+   * Where the legend goes: below the panel, outside the plot so that it never hides a curve
+   * (default), or in a corner inside the plot: top/bottom, left/right.
+   */
+  readonly legend?: 'below' | 'tl' | 'tr' | 'bl' | 'br';
   /** Points drawn as circles, their label shown on hover (an SVG title). */
   readonly marks?: readonly Mark[];
   /** Shaded spans of x, labelled at their top. */
@@ -44,6 +47,14 @@ export const PALETTE = ['#1f77b4', '#d62728', '#2ca02c', '#9467bd', '#ff7f0e', '
 const PANEL_W = 440;
 const PANEL_H = 320;
 const MARGIN = { left: 62, right: 16, top: 34, bottom: 50 };
+/** A legend below the panel: entries in columns, rows this tall. */
+const LEGEND_COLUMNS = 3;
+const LEGEND_ROW = 16;
+
+/** Height a panel's legend adds below it. */
+function legendHeight(p: Panel): number {
+  return (p.legend ?? 'below') === 'below' && p.series.length > 0 ? Math.ceil(p.series.length / LEGEND_COLUMNS) * LEGEND_ROW + 6 : 0;
+}
 
 function esc(s: string): string {
   return s.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;');
@@ -118,13 +129,15 @@ function panelSvg(p: Panel, ox: number, oy: number): string {
   for (const m of p.marks ?? []) {
     out.push(`<circle data-mark="${esc(m.label)}" cx="${X(m.x).toFixed(2)}" cy="${Y(m.y).toFixed(2)}" r="4.5" fill="white" stroke="${m.color}" stroke-width="2"><title>${esc(m.label)}</title></circle>`);
   }
-  // Legend in a corner inside the plot.
-  const corner = p.legend ?? 'tr';
+  // The legend: below the panel (under the x axis's label), or in a corner inside the plot.
+  const corner = p.legend ?? 'below';
+  const colW = w / LEGEND_COLUMNS;
   p.series.forEach((s, i) => {
-    const lx = corner[1] === 'r' ? MARGIN.left + w - 150 : MARGIN.left + 10;
-    const ly = corner[0] === 't' ? MARGIN.top + 14 + i * 16 : MARGIN.top + h - 8 - (p.series.length - 1 - i) * 16;
+    const below = corner === 'below';
+    const lx = below ? MARGIN.left + (i % LEGEND_COLUMNS) * colW + 6 : corner[1] === 'r' ? MARGIN.left + w - 150 : MARGIN.left + 10;
+    const ly = below ? PANEL_H + 12 + Math.floor(i / LEGEND_COLUMNS) * LEGEND_ROW : corner[0] === 't' ? MARGIN.top + 14 + i * 16 : MARGIN.top + h - 8 - (p.series.length - 1 - i) * 16;
     const dash = s.dash ? ` stroke-dasharray="${s.dash}"` : '';
-    out.push(`<rect x="${lx - 6}" y="${ly - 11}" width="150" height="16" fill="white" fill-opacity="0.8"/>`);
+    out.push(`<rect data-legend="${esc(s.name)}" x="${lx - 6}" y="${ly - 11}" width="${below ? colW : 150}" height="16" fill="white" fill-opacity="0.8"/>`);
     out.push(`<line x1="${lx}" y1="${ly - 4}" x2="${lx + 22}" y2="${ly - 4}" stroke="${s.color}" stroke-width="2"${dash}/>`);
     out.push(`<text x="${lx + 28}" y="${ly}" font-size="11">${esc(s.name)}</text>`);
   });
@@ -135,7 +148,7 @@ function panelSvg(p: Panel, ox: number, oy: number): string {
 /** A figure: a title, a caption line and panels side by side. */
 export function figureSvg(title: string, caption: string, panels: readonly Panel[]): string {
   const width = PANEL_W * panels.length;
-  const height = PANEL_H + 56;
+  const height = PANEL_H + 56 + Math.max(0, ...panels.map(legendHeight));
   const body = panels.map((p, i) => panelSvg(p, i * PANEL_W, 40)).join('\n');
   return [
     `<svg xmlns="http://www.w3.org/2000/svg" width="${width}" height="${height}" viewBox="0 0 ${width} ${height}" font-family="Helvetica, Arial, sans-serif">`,

@@ -19,7 +19,14 @@ export function mountLab(root: HTMLElement): () => void {
   const inputs = new Map<Field, HTMLInputElement>();
   const field = (f: (typeof FIELDS)[number]): HTMLElement => {
     const input = h('input', { type: 'number', min: f.min, max: f.max, step: f.step, name: f.key, value: value(state, f.key) });
-    input.addEventListener('input', () => change(f.key, input.valueAsNumber));
+    input.addEventListener('input', () => change(f.key, input));
+    // Leaving a refused value (Enter, Tab, a click elsewhere) shows the value in use again.
+    input.addEventListener('change', () => {
+      if (input.getAttribute('aria-invalid') !== 'true') return;
+      input.value = String(value(state, f.key));
+      input.removeAttribute('aria-invalid');
+      error.textContent = `${error.textContent?.replace(/; the figures use .*$/, '') ?? ''}; ${input.value} is still in use.`;
+    });
     inputs.set(f.key, input);
     return h('label', { className: 'lab-field' }, f.label, ' ', input);
   };
@@ -58,12 +65,15 @@ export function mountLab(root: HTMLElement): () => void {
   let shown: LabState | undefined;
   let speedTimer: ReturnType<typeof setTimeout> | undefined;
 
-  function change(key: Field, v: number): void {
-    const next = withField(state, key, v);
+  /** A value typed: taken, or refused (marked invalid, saying why and which value the figures use). */
+  function change(key: Field, input: HTMLInputElement): void {
+    const next = withField(state, key, input.valueAsNumber);
     if (typeof next === 'string') {
-      error.textContent = next;
+      input.setAttribute('aria-invalid', 'true');
+      error.textContent = `${next}; the figures use ${value(state, key)} until a value is accepted.`;
       return;
     }
+    input.removeAttribute('aria-invalid');
     apply(next);
   }
 
@@ -72,7 +82,10 @@ export function mountLab(root: HTMLElement): () => void {
     const paramsChanged = !shown || JSON.stringify(shown.params) !== JSON.stringify(next.params);
     const ballChanged = !shown || JSON.stringify(shown.ball) !== JSON.stringify(next.ball);
     state = next;
-    for (const [k, input] of inputs) if (input.valueAsNumber !== value(state, k)) input.value = String(value(state, k));
+    for (const [k, input] of inputs) {
+      if (input.valueAsNumber !== value(state, k)) input.value = String(value(state, k));
+      input.removeAttribute('aria-invalid');
+    }
     history.replaceState(null, '', `/lab${toQuery(state)}`);
     const t0 = performance.now();
     if (paramsChanged) {

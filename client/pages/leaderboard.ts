@@ -2,6 +2,7 @@
 // those set in practice runs apart (a practice run can be planned by a computer).
 import { h, KIND_NAMES, link } from '../dom.ts';
 import { api } from '../net/api.ts';
+import { count } from '../words.ts';
 
 interface Board {
   total: number;
@@ -93,7 +94,7 @@ export function mountLeaderboard(root: HTMLElement): () => void {
           ),
         );
         // Provisional ratings (RD 110 or more) are not listed: a player's own page shows theirs.
-        info.textContent = `${b.total === 0 ? 'Nobody is ranked yet' : `${b.total} ranked players`}: a player is listed once their rating is established (RD under 110).`;
+        info.textContent = `${b.total === 0 ? 'Nobody is ranked yet' : count(b.total, 'ranked player')}: a player is listed once their rating is established (RD under 110).`;
         prev.disabled = o === 0;
         next.disabled = o + 20 >= b.total;
       },

@@ -1,5 +1,7 @@
 // The lobby: the rooms as they change, a form to open a table, who is online, and your name.
 import type { LobbyRoom, ServerMessage } from '../../shared/protocol/index.ts';
+import { NAME_MAX } from '../../shared/protocol/limits.ts';
+import { cutGraphemes, graphemeCount } from '../../shared/protocol/text.ts';
 import { h, KIND_NAMES, link } from '../dom.ts';
 import type { PageContext } from '../main.ts';
 
@@ -55,20 +57,30 @@ export function mountLobby(root: HTMLElement, ctx: PageContext): () => void {
         else if (m.type === 'error') note.textContent = m.message;
       }, (err: Error) => (note.textContent = err.message));
   });
-  const name = h('input', { name: 'name', maxlength: 32, 'aria-label': 'Your name' });
-  const rename = h('form', { className: 'rename', 'aria-label': 'Your name' }, h('label', {}, 'Your name ', name), h('button', { type: 'submit' }, 'Change name'));
+  // No maxlength: it counts UTF-16 code units and would cut an emoji in half. The limit counts
+  // characters as people see them (a flag or a family emoji is one); a longer paste is cut whole.
+  const name = h('input', { name: 'name', 'aria-label': 'Your name' });
+  const nameNote = h('span', { className: 'note', role: 'status' });
+  name.addEventListener('input', () => {
+    const n = graphemeCount(name.value);
+    nameNote.textContent = n > NAME_MAX ? `A name has at most ${NAME_MAX} characters: cut to the first ${NAME_MAX}.` : '';
+    if (n > NAME_MAX) name.value = cutGraphemes(name.value, NAME_MAX);
+  });
+  const rename = h('form', { className: 'rename', 'aria-label': 'Your name' }, h('label', {}, 'Your name ', name), h('button', { type: 'submit' }, 'Change name'), nameNote);
   rename.addEventListener('submit', (e) => {
     e.preventDefault();
     note.textContent = '';
+    nameNote.textContent = '';
     void session.request({ type: 'rename', name: name.value }).then((m) => {
-      note.textContent = m.type === 'error' ? m.message : `You are ${name.value}`;
+      if (m.type === 'player') name.value = m.player.name;
+      note.textContent = m.type === 'error' ? m.message : m.type === 'player' ? `You are ${m.player.name}` : '';
     });
   });
 
   root.append(
     h('section', { 'aria-label': 'Lobby' }, h('h2', {}, 'Lobby'), rooms, more, note),
     h('section', { 'aria-label': 'Open a table' }, h('h2', {}, 'Open a table'), create),
-    h('section', { 'aria-label': 'Players' }, h('h2', {}, 'Online'), online, rename, h('p', {}, link('/practice', 'Practise alone'), ' · ', link('/leaderboard', 'Leaderboard'))),
+    h('section', { 'aria-label': 'Players' }, h('h2', {}, 'Online'), online, rename, h('p', {}, link('/practice', 'Practise alone'), ' · ', link('/leaderboard', 'Leaderboard'), ' · ', link('/help', 'How to play'))),
   );
 
   const render = (list: readonly LobbyRoom[], notListed: number) => {
@@ -97,7 +109,11 @@ export function mountLobby(root: HTMLElement, ctx: PageContext): () => void {
       const who = m.online ?? [];
       online.textContent = who.length === 0 ? 'Nobody else yet.' : who.map((p) => p.name).join(', ');
     }
-    if ((m.type === 'welcome' || m.type === 'player') && document.activeElement !== name) name.value = m.player.name;
+    if (m.type === 'welcome' || m.type === 'player') {
+      if (document.activeElement !== name) name.value = m.player.name;
+      // "You are ..." says the name the server stored, and follows a rename in another tab.
+      if (note.textContent?.startsWith('You are ')) note.textContent = `You are ${m.player.name}`;
+    }
   });
   if (session.player && document.activeElement !== name) name.value = session.player.name;
   session.keep('lobby', { type: 'lobby' });

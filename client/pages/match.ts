@@ -3,10 +3,11 @@
 // against the one the server broadcast.
 import { replayMatch, playShot, type Game, type MatchAction, type MatchRecord } from '../../shared/rules/index.ts';
 import { h, KIND_NAMES } from '../dom.ts';
-import { api } from '../net/api.ts';
+import { api, ApiRefusal } from '../net/api.ts';
 import { Animator } from '../table/animator.ts';
 import { TableView } from '../table/view.ts';
 import { inWords } from '../verdict.ts';
+import { count } from '../words.ts';
 
 interface MatchBody extends MatchRecord {
   kind: string;
@@ -40,7 +41,7 @@ export function mountMatch(root: HTMLElement, _ctx: unknown, id: string): () => 
       const list = h('ol', { className: 'shots', 'aria-label': 'Shots' });
       section.replaceChildren(
         h('h2', {}, `${KIND_NAMES[m.kind] ?? m.kind}: ${m.players.map((p) => p.name).join(' v ')}`),
-        h('p', {}, m.result ? `${names(m.result.winner)} won (${m.result.reason}).` : 'In play.', ` ${replayed.shots.length} shots; ${bad === 0 ? 'every hash matches the server\'s' : `${bad} hashes differ from the server's`}.`),
+        h('p', {}, m.result ? `${names(m.result.winner)} won (${m.result.reason}).` : 'In play.', ` ${count(replayed.shots.length, 'shot')}; ${bad === 0 ? 'every hash matches the server\'s' : bad === 1 ? '1 hash differs from the server\'s' : `${bad} hashes differ from the server's`}.`),
         tableBox,
         h('p', {}, play, ' ', h('label', {}, 'Speed ', speed)),
         info,
@@ -108,7 +109,8 @@ export function mountMatch(root: HTMLElement, _ctx: unknown, id: string): () => 
         void show(current++);
       }
     },
-    (err: Error) => section.append(h('p', { role: 'status' }, err.message)),
+    // A malformed id (400) or an unknown one (404): said in words, not the API's parameter check.
+    (err: Error) => section.append(h('p', { role: 'status' }, err instanceof ApiRefusal && (err.status === 400 || err.status === 404) ? 'No such match.' : err.message)),
   );
   return () => {
     live = false;

@@ -1,7 +1,8 @@
 // A player's page: ratings per game, best records, recent matches (more on request, a page at a
 // time from GET /api/matches).
 import { h, KIND_NAMES, link } from '../dom.ts';
-import { api } from '../net/api.ts';
+import { api, ApiRefusal } from '../net/api.ts';
+import { count } from '../words.ts';
 
 interface MatchSummary {
   id: number;
@@ -56,8 +57,8 @@ export function mountPlayer(root: HTMLElement, _ctx: unknown, id: string): () =>
       };
       section.replaceChildren(
         h('h2', {}, p.name),
-        h('p', {}, `${p.games} rated games, ${p.wins} won.`),
-        h('ul', { 'aria-label': 'Ratings' }, ...Object.entries(p.ratings).map(([k, r]) => h('li', {}, `${KIND_NAMES[k] ?? k}: ${Math.round(r.rating)}${r.provisional ? '? (provisional, ' : ' ('}RD ${Math.round(r.rd)}), ${r.games} games, ${r.wins} won`))),
+        h('p', {}, `${count(p.games, 'rated game')}, ${p.wins} won.`),
+        h('ul', { 'aria-label': 'Ratings' }, ...Object.entries(p.ratings).map(([k, r]) => h('li', {}, `${KIND_NAMES[k] ?? k}: ${Math.round(r.rating)}${r.provisional ? '? (provisional, ' : ' ('}RD ${Math.round(r.rd)}), ${count(r.games, 'game')}, ${r.wins} won`))),
         h('h3', {}, 'Records'),
         h('ul', { 'aria-label': 'Records' }, ...p.records.map((r) => h('li', {}, `${KIND_NAMES[r.kind] ?? r.kind}: ${r.what} ${r.value}${r.practice ? ' (practice)' : ''}`, r.match ? h('span', {}, ' · ', link(`/match/${r.match}`, 'replay')) : ''))),
         h('h3', {}, 'Recent matches'),
@@ -65,7 +66,8 @@ export function mountPlayer(root: HTMLElement, _ctx: unknown, id: string): () =>
         more,
       );
     },
-    (err: Error) => section.append(h('p', { role: 'status' }, err.message)),
+    // A malformed id (400) or an unknown one (404): said in words, not the API's parameter check.
+    (err: Error) => section.append(h('p', { role: 'status' }, err instanceof ApiRefusal && (err.status === 400 || err.status === 404) ? 'No such player.' : err.message)),
   );
   return () => {
     live = false;

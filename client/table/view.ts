@@ -5,10 +5,17 @@ import { drawBall, drawTable, RAIL, type DrawnBall } from './draw.ts';
 
 export type Overlay = (ctx: CanvasRenderingContext2D, view: TableView) => void;
 
+/** A phone held upright: the table turns a quarter, its length down the screen, so balls are bigger. */
+const UPRIGHT_PHONE = '(orientation: portrait) and (max-width: 600px)';
+/** A phone on its side: the room puts its controls beside the table (style.css), which may fill the height. */
+const SIDEWAYS_PHONE = '(orientation: landscape) and (max-height: 520px)';
+
 export class TableView {
   readonly canvas: HTMLCanvasElement;
   readonly spec: TableSpec;
   private scale = 1;
+  /** Drawn turned a quarter (+x up the screen, +y to the left): see UPRIGHT_PHONE. */
+  private turned = false;
   private balls: readonly DrawnBall[] = [];
   private overlay: Overlay | undefined;
   private readonly resize: ResizeObserver;
@@ -41,11 +48,21 @@ export class TableView {
     const parent = this.canvas.parentElement;
     if (!parent) return;
     const w = Math.max(200, parent.clientWidth);
-    const worldW = this.spec.length + 2 * RAIL;
-    const worldH = this.spec.width + 2 * RAIL;
-    // At most 70% of the window's height, and on a short window (a phone on its side) low
-    // enough that the controls below it fit on the same screen.
-    const h = Math.min(w * (worldH / worldW), Math.max(150, Math.min(window.innerHeight * 0.7, window.innerHeight - 200)));
+    this.turned = matchMedia(UPRIGHT_PHONE).matches;
+    const long = this.spec.length + 2 * RAIL;
+    const short = this.spec.width + 2 * RAIL;
+    const worldW = this.turned ? short : long;
+    const worldH = this.turned ? long : short;
+    // At most 70% of the window's height, and on a short window low enough that the controls
+    // below it fit on the same screen; on a phone on its side (controls beside it) the height
+    // below the page's header; turned upright, the screen's height (the page scrolls to it).
+    const top = Math.min(parent.getBoundingClientRect().top + window.scrollY, window.innerHeight * 0.3);
+    const room = this.turned
+      ? window.innerHeight - 16
+      : matchMedia(SIDEWAYS_PHONE).matches
+        ? window.innerHeight - top - 8
+        : Math.min(window.innerHeight * 0.7, window.innerHeight - 200);
+    const h = Math.min(w * (worldH / worldW), Math.max(150, room));
     const cssW = Math.min(w, h * (worldW / worldH));
     const dpr = window.devicePixelRatio || 1;
     this.canvas.style.width = `${cssW}px`;
@@ -53,6 +70,8 @@ export class TableView {
     this.canvas.width = Math.round(cssW * dpr);
     this.canvas.height = Math.round(h * dpr);
     this.scale = cssW / worldW;
+    // The balls' size on screen, for tests and tools: numbers need a few pixels to be read.
+    this.canvas.dataset.ballRadius = (this.spec.ballRadius * this.scale).toFixed(1);
     this.draw(this.balls);
   }
 
@@ -67,7 +86,9 @@ export class TableView {
     const dpr = this.canvas.width / (parseFloat(this.canvas.style.width) || this.canvas.width);
     ctx.setTransform(1, 0, 0, 1, 0, 0);
     ctx.clearRect(0, 0, this.canvas.width, this.canvas.height);
-    ctx.setTransform(this.scale * dpr, 0, 0, -this.scale * dpr, this.canvas.width / 2, this.canvas.height / 2);
+    const k = this.scale * dpr;
+    if (this.turned) ctx.setTransform(0, -k, -k, 0, this.canvas.width / 2, this.canvas.height / 2);
+    else ctx.setTransform(k, 0, 0, -k, this.canvas.width / 2, this.canvas.height / 2);
     drawTable(ctx, this.spec);
     for (const b of balls) drawBall(ctx, b, this.spec.ballRadius);
     this.overlay?.(ctx, this);
@@ -76,6 +97,8 @@ export class TableView {
   /** The world point under a pointer event's client coordinates. */
   toWorld(clientX: number, clientY: number): { x: number; y: number } {
     const r = this.canvas.getBoundingClientRect();
-    return { x: (clientX - r.left - r.width / 2) / this.scale, y: -(clientY - r.top - r.height / 2) / this.scale };
+    const dx = (clientX - r.left - r.width / 2) / this.scale;
+    const dy = (clientY - r.top - r.height / 2) / this.scale;
+    return this.turned ? { x: -dy, y: -dx } : { x: dx, y: -dy };
   }
 }

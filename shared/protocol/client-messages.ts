@@ -3,6 +3,7 @@
 // Unknown extra fields are dropped; numbers must be finite; strings and arrays are bounded.
 import * as v from 'valibot';
 import { CHAT_MAX, NAME_MAX, RACE_MAX, SHOT_CLOCK_MAX_S, SHOT_CLOCK_MIN_S } from './limits.ts';
+import { graphemeCount, plainTextProblem } from './text.ts';
 
 /** A request id, echoed as `re` by the reply or error it causes. */
 const RequestId = v.optional(v.union([v.pipe(v.string(), v.maxLength(64)), v.pipe(v.number(), v.finite())]));
@@ -18,13 +19,22 @@ export const GameKindSchema = v.picklist(GAME_KINDS);
 export const GUIDANCE = ['none', 'contact', 'path'] as const;
 
 /** Plain text: no control characters (markup is harmless, as clients never render text as HTML). */
+/**
+ * Text of 1 to `max` characters as people count them (graphemes: a flag or a family emoji is one),
+ * plain (shared/protocol/text.ts). The cap in UTF-16 code units only bounds the work: 20 a
+ * character is more than any emoji sequence needs.
+ */
 const plainText = (max: number) =>
   v.pipe(
     v.string(),
     v.trim(),
     v.minLength(1, 'must not be empty'),
-    v.maxLength(max, `must be at most ${max} characters`),
-    v.regex(/^[^\p{Cc}\p{Cf}\p{Zl}\p{Zp}]*$/u, 'must be plain text without control characters'),
+    v.maxLength(max * 20, `must be at most ${max} characters (and ${max * 20} UTF-16 code units)`),
+    v.check((s) => graphemeCount(s) <= max, (i) => `must be at most ${max} characters; this has ${graphemeCount(i.input as string)}`),
+    v.rawCheck(({ dataset, addIssue }) => {
+      const problem = dataset.typed ? plainTextProblem(dataset.value) : undefined;
+      if (problem !== undefined) addIssue({ message: problem });
+    }),
   );
 
 export const PointSchema = v.object({ x: bounded(10), y: bounded(10) });

@@ -4,6 +4,7 @@ import * as v from 'valibot';
 import { ClientMessageSchema, type ClientMessage } from './client-messages.ts';
 
 export * from './limits.ts';
+export * from './text.ts';
 export * from './client-messages.ts';
 export type * from './server-messages.ts';
 

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import type { Browser, Page } from 'playwright-core';
-import { PUBLISHED } from '../../shared/scenes/index.ts';
+import { PAPER, PUBLISHED } from '../../shared/scenes/index.ts';
 import { chromiumAvailable, serverAndChromium } from '../support/browser.ts';
 
 /** The kernel's rebound written beside each published point's label: "...; kernel: S m/s at A°". */
@@ -73,6 +73,26 @@ describe.skipIf(!chromiumAvailable())('the physics lab in Chromium', () => {
     await page.getByLabel('restitution').fill('1.5');
     await expect.poll(() => page.getByRole('alert').textContent()).toMatch(/restitution/);
     expect(new URL(page.url()).searchParams.get('ee')).toBe('0.5');
+    expect(errors).toEqual([]);
+    await page.close();
+  });
+
+  it('a refused value (mass -1) is marked while typed, says which value the figures use, and shows it again on leaving', async () => {
+    const { page, errors } = await open(env.browser, `${env.server.url}/lab`);
+    const mass = page.getByLabel('mass (kg)');
+    const inUse = String(PAPER.M);
+    expect(await mass.inputValue()).toBe(inUse);
+    const caption = await page.locator('#fig9 svg').innerHTML();
+    await mass.fill('-1');
+    await expect.poll(() => mass.getAttribute('aria-invalid')).toBe('true');
+    expect(await page.getByRole('alert').textContent()).toBe(`mass (kg): must lie in [0.05, 0.5]; the figures use ${inUse} until a value is accepted.`);
+    await mass.press('Tab');
+    // The input shows the value the figures use, no longer marked, and the alert still says why.
+    await expect.poll(() => mass.inputValue()).toBe(inUse);
+    expect(await mass.getAttribute('aria-invalid')).toBeNull();
+    expect(await page.getByRole('alert').textContent()).toBe(`mass (kg): must lie in [0.05, 0.5]; ${inUse} is still in use.`);
+    expect(await page.locator('#fig9 svg').innerHTML()).toBe(caption);
+    expect(new URL(page.url()).searchParams.get('M')).toBeNull();
     expect(errors).toEqual([]);
     await page.close();
   });

@@ -2,6 +2,7 @@ import Database from 'better-sqlite3';
 import { copyFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { describe, expect, it } from 'vitest';
+import { fill } from '../../bench/store-fill.ts';
 import { openDatabase } from '../../server/database.ts';
 import { listMigrations, migrate, MigrationError, schemaVersion } from '../../server/migrate.ts';
 import { ROOT, tempDir } from '../support/server-process.ts';
@@ -89,6 +90,31 @@ describe('migrations', () => {
     const db = new Database(':memory:');
     db.pragma(`user_version = ${LATEST + 5}`);
     expect(() => migrate(db, MIGRATIONS)).toThrow(/schema \d+ but only \d+ migrations exist/);
+    db.close();
+  });
+
+  it('009 rebuilds players for names of 32 emoji, keeping every row and every reference to it', () => {
+    // A database at 008 with players, rooms, matches and ratings, then 009 on it.
+    const before8 = tempDir('baize-migrations-');
+    for (const m of listMigrations(MIGRATIONS).filter((m) => m.version <= 8)) copyFileSync(m.path, join(before8, m.file));
+    const path = join(tempDir(), 'at8.db');
+    const at8 = openDatabase(path, before8).db;
+    fill(at8, { players: 12, matches: 40, seed: 5 });
+    const rows = (db: Database.Database) => db.prepare('SELECT * FROM players ORDER BY id').all();
+    const count = (db: Database.Database, t: string) => (db.prepare(`SELECT count(*) AS n FROM ${t}`).get() as { n: number }).n;
+    const players = rows(at8);
+    const refs = ['rooms', 'results', 'ratings'].map((t) => count(at8, t));
+    at8.close();
+    const { db, applied } = openDatabase(path, MIGRATIONS);
+    expect(applied).toContain('009_name_graphemes.sql');
+    expect(rows(db)).toEqual(players);
+    expect(['rooms', 'results', 'ratings'].map((t) => count(db, t))).toEqual(refs);
+    expect(db.pragma('foreign_key_check')).toEqual([]);
+    const insert = db.prepare('INSERT INTO players (name, token_hash, created_at) VALUES (?, ?, 1)');
+    const family = '\u{1F468}\u200D\u{1F469}\u200D\u{1F467}\u200D\u{1F466}';
+    insert.run(family.repeat(32), Buffer.alloc(32, 7)); // 224 code points
+    expect(() => insert.run('', Buffer.alloc(32, 8))).toThrow(/CHECK/);
+    expect(() => db.prepare('DELETE FROM players WHERE id = ?').run((players[0] as { id: number }).id)).toThrow(/FOREIGN KEY/);
     db.close();
   });
 });
