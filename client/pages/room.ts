@@ -5,24 +5,24 @@
 import { simulate, type Outcome } from '../../shared/physics/index.ts';
 import type { RoomView, ServerMessage } from '../../shared/protocol/index.ts';
 import { cueBallId, legalTargets, placeCueBall, playShot, POCKETS, sceneOf, strikeOf, type Game, type Shot } from '../../shared/rules/index.ts';
-import { h, KIND_NAMES } from '../dom.ts';
+import { h, KIND_NAMES, link } from '../dom.ts';
 import type { PageContext } from '../main.ts';
 import { Aim, type Guidance } from '../table/aim.ts';
 import { Animator } from '../table/animator.ts';
 import { spaceShoots, strokeControls } from '../table/controls.ts';
 import { TableView } from '../table/view.ts';
-import { inWords } from '../verdict.ts';
+import { api } from '../net/api.ts';
+import { howOf, type RoomRatings } from '../room/state.ts';
+import { resultContent, renderResult } from '../room/result.ts';
+import { renderScoreboard } from '../room/scoreboard.ts';
+import { contactWarning, drawTargetRings, firstBallAlong } from '../room/targets.ts';
+import { POCKET_NAMES, verdictSentence, type VerdictHow } from '../verdict.ts';
 
 /** Hash mismatches with the server on this page (there should be none). */
 const stats = { mismatches: 0 };
 (globalThis as { baizeMismatches?: typeof stats }).baizeMismatches = stats;
 
 type ShotMessage = Extract<ServerMessage, { type: 'shot' }>;
-
-/** The pockets as the screen shows them (+x to the right, +y up; shared/rules/pockets.ts). */
-const POCKET_NAMES: Readonly<Record<string, string>> = {
-  BL: 'upper left corner', BR: 'lower left corner', ML: 'upper side', MR: 'lower side', TL: 'upper right corner', TR: 'lower right corner',
-};
 
 /** How long a first click on "Concede" waits for the second (ms). */
 const CONFIRM_MS = 4000;
@@ -45,6 +45,13 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   let deadline: number | undefined;
   /** When "Concede" was clicked once (ms since the epoch). */
   let concedeArmedAt = -Infinity;
+  /** What made the verdict shown (a stroke and its declarations, the clock, a concession...). */
+  let how: VerdictHow = {};
+  /** The players' ratings in this kind, fetched as the match starts and once it is over. */
+  const ratings: RoomRatings = {};
+  let ratedMatch: number | undefined;
+  /** Ids of this page's chat lines in flight: a refusal (too fast) is said under the chat box. */
+  const chatIds = new Set<string>();
 
   const title = h('h2', {}, 'Room');
   const players = h('ol', { className: 'players', 'aria-label': 'Players' });
@@ -55,20 +62,32 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   const declarations = h('div', { className: 'declarations' });
   const chatLog = h('ul', { className: 'chat', 'aria-label': 'Chat' });
   const chatText = h('input', { maxlength: 200, 'aria-label': 'Message' });
-  const chat = h('form', { className: 'chat-form' }, chatText, h('button', { type: 'submit' }, 'Send'));
+  const chatNote = h('p', { className: 'note chat-note', role: 'status' });
+  const chat = h('form', { className: 'chat-form' }, chatText, h('button', { type: 'submit' }, 'Send'), chatNote);
   const banner = h('p', { className: 'banner', role: 'status' });
+  const scoreboard = h('div', { className: 'scoreboard-box' });
+  const result = h('div', { className: 'result-box' });
+  const warning = h('p', { className: 'warning', role: 'status', 'aria-label': 'Aim warning' });
   chat.addEventListener('submit', (e) => {
     e.preventDefault();
-    if (chatText.value.trim()) session.send({ type: 'chat', room: id, text: chatText.value });
+    chatNote.textContent = '';
+    if (chatText.value.trim()) {
+      const sent = session.send({ type: 'chat', room: id, text: chatText.value });
+      if (sent !== undefined) chatIds.add(sent);
+    }
     chatText.value = '';
   });
-  root.append(h('section', { className: 'room', 'aria-label': 'Room' }, title, banner, players, clock, tableBox, declarations, actions, verdict, chatLog, chat));
+  // The chat shows once the room is known (an unknown room has none).
+  chatLog.hidden = true;
+  chat.hidden = true;
+  const section = h('section', { className: 'room', 'aria-label': 'Room' }, title, banner, players, scoreboard, clock, tableBox, declarations, warning, actions, verdict, result, chatLog, chat);
+  root.append(section);
 
   const me = () => session.player?.id;
   const seated = () => !!room?.players.some((p) => p.id === me());
   const myTurn = () => !!game && room?.status === 'playing' && game.winner === null && game.turn === me() && seated() && !busy && session.status !== 'reconnecting'; // (the server could not take a shot meanwhile)
   const nameOf = (pid: string) => room?.players.find((p) => p.id === pid)?.name ?? pid;
-  const words = (text: string) => inWords(text, (pid) => (room?.players.some((p) => p.id === pid) ? nameOf(pid) : undefined));
+  const said = (g: Game) => (g.verdict ? verdictSentence(g, g.verdict, nameOf, how) : '');
 
   let controls: ReturnType<typeof strokeControls> | null = null;
   const redraw = () => {
@@ -81,11 +100,16 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     view?.destroy();
     view = new TableView(tableBox, g.table, `${KIND_NAMES[room?.kind ?? ''] ?? ''} table`);
     aim = new Aim(view, guidanceOf(room));
-    view.setOverlay((c) => aim?.draw(c));
+    view.setOverlay((c, v) => {
+      // The balls on, ringed while the table is at rest (not during a shot's animation).
+      if (game && !busy && !animator?.playing && room?.status === 'playing' && game.winner === null) drawTargetRings(c, v, aim?.balls() ?? game.balls, legalTargets(game));
+      aim?.draw(c);
+    });
     animator = new Animator(view);
     controls?.element.remove();
     controls = strokeControls(aim, shoot);
     tableBox.after(controls.element);
+    controls.element.after(warning);
   };
 
   const render = () => {
@@ -96,10 +120,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     }
     if (!room) return;
     // A room message that came while a shot played (a new frame, a placement) applies now.
-    if (!busy && room.stateId > stateId) {
-      game = room.game;
-      stateId = room.stateId;
-    }
+    if (!busy && room.stateId > stateId && room.game) adopt(room.game, room.stateId);
     title.textContent = `${KIND_NAMES[room.kind] ?? room.kind}, race to ${room.raceTo}${room.private ? ' (private)' : ''}`;
     const g = game;
     players.replaceChildren(
@@ -116,12 +137,25 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
         ),
       ),
     );
-    verdict.textContent = room.status === 'waiting' ? 'Waiting for an opponent.' : g?.verdict ? words(g.verdict.message) : `${nameOf(g?.turn ?? '')} to break.`;
+    chatLog.hidden = false;
+    chat.hidden = false;
+    scoreboard.replaceChildren(renderScoreboard(room.status === 'playing' ? g : null, nameOf));
+    verdict.textContent = room.status === 'waiting' ? 'Waiting for an opponent.' : g?.verdict ? said(g) : `${nameOf(g?.turn ?? '')} to break.`;
+    trackRatings(room);
+    result.replaceChildren();
     if (room.status === 'over') {
       const winner = room.winner ? nameOf(room.winner) : 'Nobody';
-      const said = g?.verdict ? words(g.verdict.message) : '';
-      const end = said.includes(winner) && / wins\b/.test(said) ? said : `${winner} wins. ${said}`.trim();
-      verdict.textContent = `${/[.!?]$/.test(end) ? end : `${end}.`}${room.rated === false ? (room.unrated ? ` Not rated: ${room.unrated}.` : ' Not rated.') : ''}`;
+      const words = g ? said(g) : '';
+      const end = words.includes(winner) && / wins?\b/.test(words) ? words : `${winner} wins. ${words}`.trim();
+      verdict.textContent = `${end}${room.rated === false ? (room.unrated ? ` Not rated: ${room.unrated}.` : ' Not rated.') : ''}`;
+      const asking = room.rematch?.find((pid) => pid !== me());
+      const asked = room.rematch?.includes(me() ?? '') ?? false;
+      result.append(renderResult(
+        resultContent(room, g, nameOf, ratings, me()),
+        end,
+        seated() ? { asked, onClick: () => session.send({ type: 'rematch', room: id }), note: asking !== undefined ? `${nameOf(asking)} asks for a rematch.` : asked ? 'Rematch asked: waiting for the other player.' : '' } : null,
+        () => ctx.navigate('/'),
+      ));
     }
     actions.replaceChildren();
     if (room.status === 'waiting' && !seated()) actions.append(h('button', { type: 'button', onclick: () => void session.request({ type: 'join', room: id }) }, 'Join'));
@@ -147,11 +181,6 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
         render();
       } }, armed ? 'Really concede? Click again' : 'Concede'));
     }
-    if (room.status === 'over' && seated()) {
-      actions.append(h('button', { type: 'button', onclick: () => session.send({ type: 'rematch', room: id }) }, room.rematch?.includes(me() ?? '') ? 'Rematch asked' : 'Rematch'));
-      const asking = room.rematch?.find((pid) => pid !== me());
-      if (asking !== undefined) actions.append(h('span', { className: 'note', role: 'status' }, `${nameOf(asking)} asks for a rematch.`));
-    }
     if (room.status === 'playing' && room.players.some((p) => !p.connected && p.heldUntil !== undefined && p.heldUntil <= Date.now()) && seated())
       actions.append(h('button', { type: 'button', onclick: () => session.send({ type: 'claim', room: id }) }, 'Claim the game'));
     if (!seated()) actions.append(h('span', { className: 'note' }, `Watching · ${room.spectators} watching`));
@@ -160,10 +189,13 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
       ensureTable(g);
       aim!.set(g, cueBallId(g), myTurn(), guidanceOf(room), () => {
         controls?.sync();
+        warn();
         redraw();
       });
       controls!.enable(myTurn());
-      controls!.element.hidden = !seated(); // a spectator has no cue
+      // No cue for a spectator, nor while it is the other player's turn or the game is over.
+      controls!.element.hidden = !seated() || room.status !== 'playing' || g.winner !== null || g.turn !== me();
+      warn();
       redraw();
     }
   };
@@ -247,7 +279,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
           deadline = m.deadline;
           report(m, played.outcome.hash);
           if (m.outcome.hash !== played.outcome.hash) mismatch(m, played.outcome.hash);
-          adopt(m.game, m.stateId);
+          adopt(m.game, m.stateId, m.shot);
         }
         return m;
       },
@@ -281,7 +313,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     view!.canvas.dataset.outcomeHash = outcome.hash;
     report(m, outcome.hash);
     if (outcome.hash !== m.outcome.hash) mismatch(m, outcome.hash);
-    adopt(m.game, m.stateId);
+    adopt(m.game, m.stateId, m.shot);
     animations.push(outcome);
     void animate();
   }
@@ -306,10 +338,42 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     console.warn(`baize: shot ${m.stateId} in room ${m.room}: this page computed ${mine}, the server ${m.outcome.hash}; taking the server's state`);
   }
 
-  function adopt(g: Game, sid: number): void {
+  function adopt(g: Game, sid: number, shot?: ShotMessage['shot']): void {
     if (sid < stateId) return;
+    if (sid > stateId) {
+      const loser = g.verdict?.player;
+      const claimed = g.verdict?.loss === 'concession' && room?.players.some((p) => p.id === loser && !p.connected);
+      how = howOf(game, g, shot, claimed) ?? how;
+    }
     game = g;
     stateId = sid;
+  }
+
+  /** The warning under the stroke controls: the aim's first ball is not a ball on. */
+  function warn(): void {
+    const g = game;
+    const cue = aim?.cuePosition();
+    const on = g && myTurn() && guidanceOf(room) !== 'none' && cue ? legalTargets(g) : [];
+    warning.textContent = on.length && cue && aim && g ? contactWarning(firstBallAlong(cue, aim.state.heading, aim.balls(), cueBallId(g), view!.spec.ballRadius), on) : '';
+  }
+
+  /** Ratings before the match (as it starts) and after it (once over and rated). */
+  function trackRatings(r: RoomView): void {
+    if (r.match === undefined) return;
+    const fetchAll = (when: 'before' | 'after') =>
+      r.players.forEach((p) => void api<{ ratings?: Record<string, { rating: number }> }>(`/api/players/${encodeURIComponent(p.id)}`).then((body) => {
+        const rating = body.ratings?.[r.kind]?.rating;
+        ratings[p.id] = { ...ratings[p.id], [when]: rating ?? (when === 'before' ? 1500 : undefined) };
+        if (room?.status === 'over') render();
+      }, () => undefined));
+    if (r.match !== ratedMatch && r.status === 'playing') {
+      ratedMatch = r.match;
+      for (const k of Object.keys(ratings)) delete ratings[k];
+      fetchAll('before');
+    } else if (r.status === 'over' && r.rated === true && r.match === ratedMatch && !r.players.every((p) => ratings[p.id]?.after !== undefined || ratings[p.id]?.fetching)) {
+      r.players.forEach((p) => (ratings[p.id] = { ...ratings[p.id], fetching: true }));
+      fetchAll('after');
+    }
   }
 
   const stop = session.onMessage((m) => {
@@ -324,8 +388,11 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
       room = m.room;
       deadline = m.room.deadline;
       if (!busy && m.room.stateId >= stateId) {
-        game = m.room.game;
-        stateId = m.room.stateId;
+        if (m.room.game) adopt(m.room.game, m.room.stateId);
+        else {
+          game = null;
+          stateId = m.room.stateId;
+        }
       }
       render();
     } else if (m.type === 'shot' && m.room === id && m.re === undefined) {
@@ -333,8 +400,11 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     } else if (m.type === 'chat' && m.room === id) {
       chatLog.append(h('li', {}, h('strong', {}, m.from.name), ': ', m.text));
       chatLog.scrollTop = chatLog.scrollHeight;
+    } else if (m.type === 'error' && m.re !== undefined && chatIds.delete(String(m.re))) {
+      // A chat line refused (too fast, or not allowed here): said to its sender by the chat box.
+      chatNote.textContent = `${m.message.charAt(0).toUpperCase()}${m.message.slice(1)}.`;
     } else if (m.type === 'error' && m.code === 'no-room' && room === null) {
-      verdict.textContent = 'There is no such room.';
+      section.replaceChildren(h('h2', {}, 'No such room'), h('p', {}, 'This room does not exist or has closed. ', link('/', 'Back to the lobby'), '.'));
     }
   });
   const stopStatus = session.onStatus((s) => {
