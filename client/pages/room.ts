@@ -52,6 +52,8 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   let ratedMatch: number | undefined;
   /** Ids of this page's chat lines in flight: a refusal (too fast) is said under the chat box. */
   const chatIds = new Set<string>();
+  /** What the result dialog shows ('' while there is none). */
+  let resultKey = '';
 
   const title = h('h2', {}, 'Room');
   const players = h('ol', { className: 'players', 'aria-label': 'Players' });
@@ -142,7 +144,6 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     scoreboard.replaceChildren(renderScoreboard(room.status === 'playing' ? g : null, nameOf));
     verdict.textContent = room.status === 'waiting' ? 'Waiting for an opponent.' : g?.verdict ? said(g) : `${nameOf(g?.turn ?? '')} to break.`;
     trackRatings(room);
-    result.replaceChildren();
     if (room.status === 'over') {
       const winner = room.winner ? nameOf(room.winner) : 'Nobody';
       const words = g ? said(g) : '';
@@ -150,12 +151,20 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
       verdict.textContent = `${end}${room.rated === false ? (room.unrated ? ` Not rated: ${room.unrated}.` : ' Not rated.') : ''}`;
       const asking = room.rematch?.find((pid) => pid !== me());
       const asked = room.rematch?.includes(me() ?? '') ?? false;
-      result.append(renderResult(
-        resultContent(room, g, nameOf, ratings, me()),
-        end,
-        seated() ? { asked, onClick: () => session.send({ type: 'rematch', room: id }), note: asking !== undefined ? `${nameOf(asking)} asks for a rematch.` : asked ? 'Rematch asked: waiting for the other player.' : '' } : null,
-        () => ctx.navigate('/'),
-      ));
+      const content = resultContent(room, g, nameOf, ratings, me());
+      const note = asking !== undefined ? `${nameOf(asking)} asks for a rematch.` : asked ? 'Rematch asked: waiting for the other player.' : '';
+      // Drawn again only when it says something new, so that focus and clicks stay put.
+      const key = JSON.stringify([content, end, note, asked, seated()]);
+      if (key !== resultKey) {
+        const first = resultKey === '';
+        resultKey = key;
+        const dialog = renderResult(content, end, seated() ? { asked, onClick: () => session.send({ type: 'rematch', room: id }), note } : null, () => ctx.navigate('/'));
+        result.replaceChildren(dialog);
+        if (first) dialog.focus();
+      }
+    } else {
+      resultKey = '';
+      result.replaceChildren();
     }
     actions.replaceChildren();
     if (room.status === 'waiting' && !seated()) actions.append(h('button', { type: 'button', onclick: () => void session.request({ type: 'join', room: id }) }, 'Join'));
@@ -415,7 +424,10 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   const tick = setInterval(() => {
     // While the last shot's balls still roll the deadline is further off than the clock's length:
     // the clock shows full until they stop.
-    clock.textContent = deadline && room?.status === 'playing' ? `${Math.max(0, Math.min(room.shotClock, Math.ceil((deadline - Date.now()) / 1000)))} s` : '';
+    const left = deadline && room?.status === 'playing' ? Math.max(0, Math.min(room.shotClock, Math.ceil((deadline - Date.now()) / 1000))) : null;
+    clock.textContent = left === null ? '' : `${left} s`;
+    // The bar beside the seconds (no text of its own: the timer's text stays "N s").
+    if (left !== null && room) clock.append(clockBar(left / room.shotClock));
   }, 250);
   session.keep(`room:${id}`, { type: 'watch', room: id });
   return () => {
@@ -433,4 +445,13 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
 function guidanceOf(room: RoomView | null): Guidance {
   const g = (room as { guidance?: string } | null)?.guidance;
   return g === 'none' || g === 'path' ? g : 'contact';
+}
+
+/** The shot clock's bar: the time left as a fraction of the clock. */
+function clockBar(fraction: number): HTMLElement {
+  const bar = h('span', { className: 'clock-bar', 'aria-hidden': 'true' }, h('span', {}));
+  const fill = bar.firstChild as HTMLElement;
+  fill.style.width = `${Math.round(Math.max(0, Math.min(1, fraction)) * 100)}%`;
+  if (fraction <= 0.25) bar.classList.add('low');
+  return bar;
 }

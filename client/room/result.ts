@@ -49,7 +49,7 @@ export function renderResult(content: ResultContent, said: string, rematch: { as
   const heading = h('h3', { id: 'result-heading' }, content.heading);
   return h(
     'div',
-    { className: 'result', role: 'dialog', 'aria-labelledby': 'result-heading', 'aria-describedby': 'result-said' },
+    { className: 'result', role: 'dialog', 'aria-labelledby': 'result-heading', 'aria-describedby': 'result-said', tabindex: -1 },
     heading,
     h('p', { id: 'result-said' }, said),
     h('p', { className: 'result-score' }, content.score),
