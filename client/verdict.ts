@@ -85,9 +85,10 @@ export function verdictSentence(game: Game, v: Verdict, names: (id: PlayerId) =>
       : `the balls are racked again; ${does(v.next, 'breaks', 'break')}`;
     return end(s);
   }
-  const clock = action === 'clock' ? `${who(p)} ran out of time: ` : '';
   // A run-out is judged as a stroke that meets nothing: say the clock, not "no ball hit".
-  const fouls = action === 'clock' ? 'out of time' : foulWords(v);
+  const clock = action === 'clock';
+  const fouls = foulWords(v);
+  const foulBy = clock ? `${who(p)} ran out of time` : `foul by ${who(p)} (${fouls})`;
   const verb = (id: PlayerId, third: string, base: string) => (you(id) ? base : third);
   /** "the rack", or "the game" when it ended the match. */
   const what = (id: PlayerId, unit: string) => (game.winner === id ? 'the game' : `the ${unit}`);
@@ -98,7 +99,7 @@ export function verdictSentence(game: Game, v: Verdict, names: (id: PlayerId) =>
       const pool = game;
       const called = how.shot?.calledPocket;
       const pocket = called === undefined ? undefined : POCKET_NAMES[called] ?? called;
-      if (v.loss === 'three-fouls') s = `${does(p, 'fouls', 'foul')} (${fouls}) for the third time in a row and ${verb(p, 'loses', 'lose')} ${what(other, 'rack')}`;
+      if (v.loss === 'three-fouls') s = `${clock ? `${who(p)} ran out of time, a third foul in a row,` : `${does(p, 'fouls', 'foul')} (${fouls}) for the third time in a row`} and ${verb(p, 'loses', 'lose')} ${what(other, 'rack')}`;
       else if (v.loss?.startsWith('eight-')) {
         const why = v.loss === 'eight-early' ? 'before clearing the group' : v.loss === 'eight-with-foul' ? `with a foul (${fouls})` : pocket === undefined ? 'without calling a pocket' : `in another pocket than the called ${pocket}`;
         s = `${does(p, 'pockets', 'pocket')} the 8 ${why} and ${verb(p, 'loses', 'lose')} ${what(other, 'rack')}`;
@@ -109,7 +110,7 @@ export function verdictSentence(game: Game, v: Verdict, names: (id: PlayerId) =>
         s = `illegal break by ${who(p)}: ${who(other)} may play on, re-rack and break, or have ${who(p)} break again`;
       } else if (v.foul) {
         const inHand = pool.ballInHand === 'kitchen' ? ' in the kitchen' : '';
-        s = `${clock}foul by ${who(p)} (${fouls}): ${has(v.next)} ball in hand${inHand}`;
+        s = `${foulBy}: ${has(v.next)} ball in hand${inHand}`;
         if (v.spotted.length) s += `; ${ballsWords(v.spotted)} ${v.spotted.length === 1 ? 'is' : 'are'} spotted`;
         if (pool.kind === 'nineball' && pool.fouls[p] === 2) s += `; ${does(p, 'is', 'are')} on two fouls`;
         if (pool.choices.includes('rerack')) s += ', or may re-rack';
@@ -132,13 +133,13 @@ export function verdictSentence(game: Game, v: Verdict, names: (id: PlayerId) =>
         const broke = (pool.kind === 'nineball' && pool.phase === 'push-out') || (how.before !== undefined && 'phase' in how.before && how.before.phase === 'break');
         s = broke ? `legal break by ${who(p)}, nothing down; ${who(v.next)} to play` : `${does(p, 'misses', 'miss')}; ${who(v.next)} to play`;
       }
-      return end(clock + s);
+      return end(s);
     }
     case 'snooker': {
       const g = game;
       const penalty = v.points[other] ?? 0;
       if (v.foul) {
-        s = `${clock}foul by ${who(p)} (${fouls}): ${penalty} points to ${who(other)}`;
+        s = `${foulBy}: ${penalty} points to ${who(other)}`;
         if (g.freeBall) s += '; free ball';
       } else {
         const scored = v.points[p] ?? 0;
@@ -160,7 +161,7 @@ export function verdictSentence(game: Game, v: Verdict, names: (id: PlayerId) =>
       if ((v.points[p] ?? 0) > 0) {
         s = `point for ${who(p)} (run ${g.run})`;
         if (g.winner === p) s += `; ${does(p, 'reaches', 'reach')} ${g.raceTo} and ${verb(p, 'wins', 'win')}`;
-      } else s = `${clock}no point for ${who(p)}${v.foul ? ` (foul: ${fouls})` : ''}; ${who(v.next)} to play`;
+      } else s = clock ? `${who(p)} ran out of time; ${who(v.next)} to play` : `no point for ${who(p)}${v.foul ? ` (foul: ${fouls})` : ''}; ${who(v.next)} to play`;
       return end(s);
     }
     case 'practice': {

@@ -40,7 +40,11 @@ describe('verdictSentence: nine-ball', () => {
   });
   it('a shot clock run-out says the time, not "no ball hit" (defect 3)', () => {
     const g = shotClockExpired(nine());
-    expect(verdictSentence(g, g.verdict!, names, { action: 'clock' })).toBe('Ann ran out of time: foul by Ann (out of time): Bob has ball in hand.');
+    expect(verdictSentence(g, g.verdict!, names, { action: 'clock' })).toBe('Ann ran out of time: Bob has ball in hand.');
+    const snooker = shotClockExpired(newGame('snooker', ['4', '5'], { seed: 1 }));
+    expect(verdictSentence(snooker, snooker.verdict!, names, { action: 'clock' })).toBe('Ann ran out of time: 4 points to Bob; ball on: a red.');
+    const carom = shotClockExpired(newGame('threecushion', ['4', '5'], { seed: 1 }));
+    expect(verdictSentence(carom, carom.verdict!, names, { action: 'clock' })).toBe('Ann ran out of time; Bob to play.');
   });
   it('a push-out', () => {
     const g0 = { ...nine(), phase: 'push-out' } as Game;
@@ -84,7 +88,32 @@ describe('verdictSentence: snooker', () => {
   });
 });
 
+describe('verdictSentence: more of eight-ball and snooker', () => {
+  it('the 8 in another pocket than the called one loses the rack', () => {
+    const start = newGame('eightball', ['4', '5'], { seed: 1 });
+    const g0 = { ...start, phase: 'play', groups: { '4': 'solids', '5': 'stripes' }, balls: start.balls.filter((b) => !['1', '2', '3', '4', '5', '6', '7'].includes(b.id)) } as Game;
+    const g = applyShot(g0, stroke('4', { calledPocket: 'TL', calledBall: '8' }), outcome(g0, '8', { '8': 'BL' }));
+    expect(verdictSentence(g, g.verdict!, names, { shot: { calledPocket: 'TL' } })).toBe('Ann pockets the 8 in another pocket than the called upper right corner and loses the game.');
+  });
+  it('the black potted last wins the frame, with its score', () => {
+    const start = newGame('snooker', ['4', '5'], { seed: 1 });
+    const g0 = { ...start, shots: 40, on: 'black', scores: { '4': 53, '5': 50 }, balls: start.balls.filter((b) => b.id === 'cue' || b.id === 'black') } as Game;
+    const g = applyShot(g0, stroke('4'), outcome(g0, 'black', { black: 'TL' }));
+    expect(verdictSentence(g, g.verdict!, names)).toBe('Ann pots the black for 7 (break 7); Ann wins the frame 60-50.');
+  });
+});
+
 describe('verdictSentence: three-cushion', () => {
+  it('a point says the run', () => {
+    const g0 = newGame('threecushion', ['4', '5'], { seed: 1 });
+    const events = [
+      { t: 1, kind: 'ball', balls: ['white', 'red'] },
+      ...[2, 3, 4].map((t) => ({ t, kind: 'cushion', balls: ['white'] })),
+      { t: 5, kind: 'ball', balls: ['white', 'yellow'] },
+    ];
+    const g = applyShot(g0, { ...stroke('4'), ball: 'white' }, { balls: g0.balls.map((b) => ({ ...b, pocketed: false })), events });
+    expect(verdictSentence(g, g.verdict!, names)).toBe('Point for Ann (run 1).');
+  });
   it('a point with the run, and no point', () => {
     const g0 = newGame('threecushion', ['4', '5'], { seed: 1 });
     const cue = g0.turn === '4' ? 'white' : 'yellow';
