@@ -50,6 +50,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   /** The players' ratings in this kind, fetched as the match starts and once it is over. */
   const ratings: RoomRatings = {};
   let ratedMatch: number | undefined;
+  let ratedAfter: number | undefined;
   /** Ids of this page's chat lines in flight: a refusal (too fast) is said under the chat box. */
   const chatIds = new Set<string>();
   /** What the result dialog shows ('' while there is none). */
@@ -372,15 +373,18 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     const fetchAll = (when: 'before' | 'after') =>
       r.players.forEach((p) => void api<{ ratings?: Record<string, { rating: number }> }>(`/api/players/${encodeURIComponent(p.id)}`).then((body) => {
         const rating = body.ratings?.[r.kind]?.rating;
-        ratings[p.id] = { ...ratings[p.id], [when]: rating ?? (when === 'before' ? 1500 : undefined) };
+        // No rating yet in this kind: a new player starts at 1500 (docs/api.md).
+        ratings[p.id] = { ...ratings[p.id], [when]: rating ?? 1500 };
         if (room?.status === 'over') render();
       }, () => undefined));
-    if (r.match !== ratedMatch && r.status === 'playing') {
+    if (r.match !== ratedMatch && r.status !== 'waiting') {
+      // A new match (or a page opened on one): the ratings before it, when it is still in play.
       ratedMatch = r.match;
       for (const k of Object.keys(ratings)) delete ratings[k];
-      fetchAll('before');
-    } else if (r.status === 'over' && r.rated === true && r.match === ratedMatch && !r.players.every((p) => ratings[p.id]?.after !== undefined || ratings[p.id]?.fetching)) {
-      r.players.forEach((p) => (ratings[p.id] = { ...ratings[p.id], fetching: true }));
+      if (r.status === 'playing') fetchAll('before');
+    }
+    if (r.status === 'over' && r.rated === true && ratedAfter !== r.match) {
+      ratedAfter = r.match;
       fetchAll('after');
     }
   }

@@ -4,7 +4,7 @@ import type { Game } from '../../shared/rules/index.ts';
 import type { VerdictHow } from '../verdict.ts';
 import type { RatingChange } from './result.ts';
 
-export type RoomRatings = Record<string, RatingChange & { fetching?: boolean }>;
+export type RoomRatings = Record<string, RatingChange>;
 
 /**
  * What made `after`'s verdict, from the game before it: a broadcast stroke (with its
