@@ -8,12 +8,13 @@ export function drawTargetRings(ctx: CanvasRenderingContext2D, view: TableView, 
   const R = view.spec.ballRadius;
   ctx.save();
   ctx.strokeStyle = 'rgba(255, 230, 90, 0.9)';
-  ctx.lineWidth = 2 / view.pixelsPerMetre;
+  // Many balls on (snooker's reds): thinner rings, so the pack stays readable.
+  ctx.lineWidth = (ids.length > 6 ? 1 : 2) / view.pixelsPerMetre;
   ctx.setLineDash([4 / view.pixelsPerMetre, 3 / view.pixelsPerMetre]);
   for (const b of balls) {
     if (!ids.includes(b.id)) continue;
     ctx.beginPath();
-    ctx.arc(b.x, b.y, R * 1.45, 0, 2 * Math.PI);
+    ctx.arc(b.x, b.y, R * (ids.length > 6 ? 1.25 : 1.45), 0, 2 * Math.PI);
     ctx.stroke();
   }
   ctx.restore();
