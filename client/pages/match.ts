@@ -6,7 +6,7 @@ import { h, KIND_NAMES } from '../dom.ts';
 import { api, ApiRefusal } from '../net/api.ts';
 import { Animator } from '../table/animator.ts';
 import { TableView } from '../table/view.ts';
-import { inWords } from '../verdict.ts';
+import { verdictSentence } from '../verdict.ts';
 import { count } from '../words.ts';
 
 interface MatchBody extends MatchRecord {
@@ -25,7 +25,7 @@ export function mountMatch(root: HTMLElement, _ctx: unknown, id: string): () => 
   api<MatchBody>(`/api/matches/${encodeURIComponent(id)}`).then(
     (m) => {
       if (!live) return;
-      const names = (s: string) => inWords(s, (pid) => m.players.find((p) => p.id === pid)?.name);
+      const names = (pid: string) => m.players.find((p) => p.id === pid)?.name ?? pid;
       let replayed;
       try {
         replayed = replayMatch(m);
@@ -61,7 +61,8 @@ export function mountMatch(root: HTMLElement, _ctx: unknown, id: string): () => 
         const a = m.actions[i] as Extract<MatchAction, { type: 'shot' }>;
         const played = playShot(before[i]!, { ...a.shot, player: a.player } as never, a.cueBall);
         view!.canvas.dataset.outcomeHash = played.outcome.hash;
-        info.textContent = `Shot ${k + 1}: ${names(played.game.verdict?.message ?? '')}`;
+        const v = played.game.verdict;
+        info.textContent = `Shot ${k + 1}: ${v ? verdictSentence(played.game, v, names, { shot: a.shot as { pushOut?: boolean; calledPocket?: string }, before: before[i]! }) : ''}`;
         await animator!.play(played.outcome, Number(speed.value));
       };
       const run = async () => {

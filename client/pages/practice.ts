@@ -27,7 +27,7 @@ import { spaceShoots, strokeControls } from '../table/controls.ts';
 import { Pace } from '../table/pace.ts';
 import { SoundPlayer, soundToggle } from '../table/sound.ts';
 import { TableView } from '../table/view.ts';
-import { inWords } from '../verdict.ts';
+import { verdictSentence } from '../verdict.ts';
 
 const ME = 'me';
 
@@ -166,7 +166,8 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
       game = played.game;
       const over = run && (game.turn !== ME || game.winner !== null);
       const end = !over ? '' : run?.issued ? ' The run is over: submit it.' : ' The run is over (offline: not submitted).';
-      info.textContent = `${inWords(v.message, (id) => (id === ME ? 'you' : id === PRACTICE_OPPONENT ? 'the table' : undefined))}${run ? ` Score ${run.score}.${end}` : ''}`;
+      const said = verdictSentence(played.game, v, (id) => (id === PRACTICE_OPPONENT ? 'the table' : id), { me: ME, shot, before: played.from });
+      info.textContent = `${said}${run ? ` Score ${run.score}.${end}` : ''}`;
       refresh();
     });
   }

@@ -5,7 +5,7 @@
 import { simulate, type Outcome } from '../../shared/physics/index.ts';
 import type { RoomView, ServerMessage } from '../../shared/protocol/index.ts';
 import { cueBallId, legalTargets, placeCueBall, playShot, POCKETS, sceneOf, strikeOf, type Game, type Shot } from '../../shared/rules/index.ts';
-import { h, KIND_NAMES } from '../dom.ts';
+import { h, KIND_NAMES, link } from '../dom.ts';
 import type { PageContext } from '../main.ts';
 import { Aim, type Guidance } from '../table/aim.ts';
 import { Animator } from '../table/animator.ts';
@@ -13,18 +13,18 @@ import { spaceShoots, strokeControls } from '../table/controls.ts';
 import { Pace } from '../table/pace.ts';
 import { SoundPlayer, soundToggle } from '../table/sound.ts';
 import { TableView } from '../table/view.ts';
-import { inWords } from '../verdict.ts';
+import { api } from '../net/api.ts';
+import { howOf, type RoomRatings } from '../room/state.ts';
+import { resultContent, renderResult } from '../room/result.ts';
+import { renderScoreboard } from '../room/scoreboard.ts';
+import { contactWarning, drawTargetRings, firstBallAlong } from '../room/targets.ts';
+import { POCKET_NAMES, verdictSentence, type VerdictHow } from '../verdict.ts';
 
 /** Hash mismatches with the server on this page (there should be none). */
 const stats = { mismatches: 0 };
 (globalThis as { baizeMismatches?: typeof stats }).baizeMismatches = stats;
 
 type ShotMessage = Extract<ServerMessage, { type: 'shot' }>;
-
-/** The pockets as the screen shows them (+x to the right, +y up; shared/rules/pockets.ts). */
-const POCKET_NAMES: Readonly<Record<string, string>> = {
-  BL: 'upper left corner', BR: 'lower left corner', ML: 'upper side', MR: 'lower side', TL: 'upper right corner', TR: 'lower right corner',
-};
 
 /** How long a first click on "Concede" waits for the second (ms). */
 const CONFIRM_MS = 4000;
@@ -47,6 +47,16 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   let deadline: number | undefined;
   /** When "Concede" was clicked once (ms since the epoch). */
   let concedeArmedAt = -Infinity;
+  /** What made the verdict shown (a stroke and its declarations, the clock, a concession...). */
+  let how: VerdictHow = {};
+  /** The players' ratings in this kind, fetched as the match starts and once it is over. */
+  const ratings: RoomRatings = {};
+  let ratedMatch: number | undefined;
+  let ratedAfter: number | undefined;
+  /** Ids of this page's chat lines in flight: a refusal (too fast) is said under the chat box. */
+  const chatIds = new Set<string>();
+  /** What the result dialog shows ('' while there is none). */
+  let resultKey = '';
 
   const title = h('h2', {}, 'Room');
   const players = h('ol', { className: 'players', 'aria-label': 'Players' });
@@ -57,14 +67,26 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   const declarations = h('div', { className: 'declarations' });
   const chatLog = h('ul', { className: 'chat', 'aria-label': 'Chat' });
   const chatText = h('input', { maxlength: 200, 'aria-label': 'Message' });
-  const chat = h('form', { className: 'chat-form' }, chatText, h('button', { type: 'submit' }, 'Send'));
+  const chatNote = h('p', { className: 'note chat-note', role: 'status' });
+  const chat = h('form', { className: 'chat-form' }, chatText, h('button', { type: 'submit' }, 'Send'), chatNote);
   const banner = h('p', { className: 'banner', role: 'status' });
+  const scoreboard = h('div', { className: 'scoreboard-box' });
+  const result = h('div', { className: 'result-box' });
+  const warning = h('p', { className: 'warning', role: 'status', 'aria-label': 'Aim warning' });
   chat.addEventListener('submit', (e) => {
     e.preventDefault();
-    if (chatText.value.trim()) session.send({ type: 'chat', room: id, text: chatText.value });
+    chatNote.textContent = '';
+    if (chatText.value.trim()) {
+      const sent = session.send({ type: 'chat', room: id, text: chatText.value });
+      if (sent !== undefined) chatIds.add(sent);
+    }
     chatText.value = '';
   });
-  root.append(h('section', { className: 'room', 'aria-label': 'Room' }, title, banner, players, clock, tableBox, declarations, actions, verdict, chatLog, chat));
+  // The chat shows once the room is known (an unknown room has none).
+  chatLog.hidden = true;
+  chat.hidden = true;
+  const section = h('section', { className: 'room', 'aria-label': 'Room' }, title, banner, players, scoreboard, clock, tableBox, declarations, warning, actions, verdict, result, chatLog, chat);
+  root.append(section);
   // Every shot animates through the pace (fast forward) with its sounds.
   const sound = new SoundPlayer();
   const pace = new Pace({ play: (o, speed, from) => animator!.play(o, speed, from) }, sound);
@@ -74,7 +96,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   const seated = () => !!room?.players.some((p) => p.id === me());
   const myTurn = () => !!game && room?.status === 'playing' && game.winner === null && game.turn === me() && seated() && !busy && session.status !== 'reconnecting'; // (the server could not take a shot meanwhile)
   const nameOf = (pid: string) => room?.players.find((p) => p.id === pid)?.name ?? pid;
-  const words = (text: string) => inWords(text, (pid) => (room?.players.some((p) => p.id === pid) ? nameOf(pid) : undefined));
+  const said = (g: Game) => (g.verdict ? verdictSentence(g, g.verdict, nameOf, how) : '');
 
   let controls: ReturnType<typeof strokeControls> | null = null;
   const redraw = () => {
@@ -87,11 +109,16 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     view?.destroy();
     view = new TableView(tableBox, g.table, `${KIND_NAMES[room?.kind ?? ''] ?? ''} table`);
     aim = new Aim(view, guidanceOf(room));
-    view.setOverlay((c) => aim?.draw(c));
+    view.setOverlay((c, v) => {
+      // The balls on, ringed while the table is at rest (not during a shot's animation).
+      if (game && !busy && !animator?.playing && room?.status === 'playing' && game.winner === null) drawTargetRings(c, v, aim?.balls() ?? game.balls, legalTargets(game));
+      aim?.draw(c);
+    });
     animator = new Animator(view);
     controls?.element.remove();
     controls = strokeControls(aim, shoot);
     tableBox.after(controls.element);
+    controls.element.after(warning);
   };
 
   const render = () => {
@@ -102,10 +129,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     }
     if (!room) return;
     // A room message that came while a shot played (a new frame, a placement) applies now.
-    if (!busy && room.stateId > stateId) {
-      game = room.game;
-      stateId = room.stateId;
-    }
+    if (!busy && room.stateId > stateId && room.game) adopt(room.game, room.stateId);
     title.textContent = `${KIND_NAMES[room.kind] ?? room.kind}, race to ${room.raceTo}${room.private ? ' (private)' : ''}`;
     const g = game;
     players.replaceChildren(
@@ -122,12 +146,32 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
         ),
       ),
     );
-    verdict.textContent = room.status === 'waiting' ? 'Waiting for an opponent.' : g?.verdict ? words(g.verdict.message) : `${nameOf(g?.turn ?? '')} to break.`;
+    chatLog.hidden = false;
+    chat.hidden = false;
+    scoreboard.replaceChildren(renderScoreboard(room.status === 'playing' ? g : null, nameOf));
+    verdict.textContent = room.status === 'waiting' ? 'Waiting for an opponent.' : g?.verdict ? said(g) : `${nameOf(g?.turn ?? '')} to break.`;
+    trackRatings(room);
     if (room.status === 'over') {
       const winner = room.winner ? nameOf(room.winner) : 'Nobody';
-      const said = g?.verdict ? words(g.verdict.message) : '';
-      const end = said.includes(winner) && / wins\b/.test(said) ? said : `${winner} wins. ${said}`.trim();
-      verdict.textContent = `${/[.!?]$/.test(end) ? end : `${end}.`}${room.rated === false ? (room.unrated ? ` Not rated: ${room.unrated}.` : ' Not rated.') : ''}`;
+      const words = g ? said(g) : '';
+      const end = words.includes(winner) && / wins?\b/.test(words) ? words : `${winner} wins. ${words}`.trim();
+      verdict.textContent = `${end}${room.rated === false ? (room.unrated ? ` Not rated: ${room.unrated}.` : ' Not rated.') : ''}`;
+      const asking = room.rematch?.find((pid) => pid !== me());
+      const asked = room.rematch?.includes(me() ?? '') ?? false;
+      const content = resultContent(room, g, nameOf, ratings, me());
+      const note = asking !== undefined ? `${nameOf(asking)} asks for a rematch.` : asked ? 'Rematch asked: waiting for the other player.' : '';
+      // Drawn again only when it says something new, so that focus and clicks stay put.
+      const key = JSON.stringify([content, end, note, asked, seated()]);
+      if (key !== resultKey) {
+        const first = resultKey === '';
+        resultKey = key;
+        const dialog = renderResult(content, end, seated() ? { asked, onClick: () => session.send({ type: 'rematch', room: id }), note } : null, () => ctx.navigate('/'));
+        result.replaceChildren(dialog);
+        if (first) dialog.focus();
+      }
+    } else {
+      resultKey = '';
+      result.replaceChildren();
     }
     actions.replaceChildren();
     if (room.status === 'waiting' && !seated()) actions.append(h('button', { type: 'button', onclick: () => void session.request({ type: 'join', room: id }) }, 'Join'));
@@ -153,11 +197,6 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
         render();
       } }, armed ? 'Really concede? Click again' : 'Concede'));
     }
-    if (room.status === 'over' && seated()) {
-      actions.append(h('button', { type: 'button', onclick: () => session.send({ type: 'rematch', room: id }) }, room.rematch?.includes(me() ?? '') ? 'Rematch asked' : 'Rematch'));
-      const asking = room.rematch?.find((pid) => pid !== me());
-      if (asking !== undefined) actions.append(h('span', { className: 'note', role: 'status' }, `${nameOf(asking)} asks for a rematch.`));
-    }
     if (room.status === 'playing' && room.players.some((p) => !p.connected && p.heldUntil !== undefined && p.heldUntil <= Date.now()) && seated())
       actions.append(h('button', { type: 'button', onclick: () => session.send({ type: 'claim', room: id }) }, 'Claim the game'));
     if (!seated()) actions.append(h('span', { className: 'note' }, `Watching · ${room.spectators} watching`));
@@ -166,10 +205,13 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
       ensureTable(g);
       aim!.set(g, cueBallId(g), myTurn(), guidanceOf(room), () => {
         controls?.sync();
+        warn();
         redraw();
       });
       controls!.enable(myTurn());
-      controls!.element.hidden = !seated(); // a spectator has no cue
+      // No cue for a spectator, nor while it is the other player's turn or the game is over.
+      controls!.element.hidden = !seated() || room.status !== 'playing' || g.winner !== null || g.turn !== me();
+      warn();
       redraw();
     }
   };
@@ -253,7 +295,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
           deadline = m.deadline;
           report(m, played.outcome.hash);
           if (m.outcome.hash !== played.outcome.hash) mismatch(m, played.outcome.hash);
-          adopt(m.game, m.stateId);
+          adopt(m.game, m.stateId, m.shot);
         }
         return m;
       },
@@ -287,7 +329,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     view!.canvas.dataset.outcomeHash = outcome.hash;
     report(m, outcome.hash);
     if (outcome.hash !== m.outcome.hash) mismatch(m, outcome.hash);
-    adopt(m.game, m.stateId);
+    adopt(m.game, m.stateId, m.shot);
     animations.push(outcome);
     void animate();
   }
@@ -312,10 +354,45 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     console.warn(`baize: shot ${m.stateId} in room ${m.room}: this page computed ${mine}, the server ${m.outcome.hash}; taking the server's state`);
   }
 
-  function adopt(g: Game, sid: number): void {
+  function adopt(g: Game, sid: number, shot?: ShotMessage['shot']): void {
     if (sid < stateId) return;
+    if (sid > stateId) {
+      const loser = g.verdict?.player;
+      const claimed = g.verdict?.loss === 'concession' && room?.players.some((p) => p.id === loser && !p.connected);
+      how = howOf(game, g, shot, claimed) ?? how;
+    }
     game = g;
     stateId = sid;
+  }
+
+  /** The warning under the stroke controls: the aim's first ball is not a ball on. */
+  function warn(): void {
+    const g = game;
+    const cue = aim?.cuePosition();
+    const on = g && myTurn() && guidanceOf(room) !== 'none' && cue ? legalTargets(g) : [];
+    warning.textContent = on.length && cue && aim && g ? contactWarning(firstBallAlong(cue, aim.state.heading, aim.balls(), cueBallId(g), view!.spec.ballRadius), on) : '';
+  }
+
+  /** Ratings before the match (as it starts) and after it (once over and rated). */
+  function trackRatings(r: RoomView): void {
+    if (r.match === undefined) return;
+    const fetchAll = (when: 'before' | 'after') =>
+      r.players.forEach((p) => void api<{ ratings?: Record<string, { rating: number }> }>(`/api/players/${encodeURIComponent(p.id)}`).then((body) => {
+        const rating = body.ratings?.[r.kind]?.rating;
+        // No rating yet in this kind: a new player starts at 1500 (docs/api.md).
+        ratings[p.id] = { ...ratings[p.id], [when]: rating ?? 1500 };
+        if (room?.status === 'over') render();
+      }, () => undefined));
+    if (r.match !== ratedMatch && r.status !== 'waiting') {
+      // A new match (or a page opened on one): the ratings before it, when it is still in play.
+      ratedMatch = r.match;
+      for (const k of Object.keys(ratings)) delete ratings[k];
+      if (r.status === 'playing') fetchAll('before');
+    }
+    if (r.status === 'over' && r.rated === true && ratedAfter !== r.match) {
+      ratedAfter = r.match;
+      fetchAll('after');
+    }
   }
 
   const stop = session.onMessage((m) => {
@@ -330,8 +407,11 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
       room = m.room;
       deadline = m.room.deadline;
       if (!busy && m.room.stateId >= stateId) {
-        game = m.room.game;
-        stateId = m.room.stateId;
+        if (m.room.game) adopt(m.room.game, m.room.stateId);
+        else {
+          game = null;
+          stateId = m.room.stateId;
+        }
       }
       render();
     } else if (m.type === 'shot' && m.room === id && m.re === undefined) {
@@ -339,8 +419,11 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     } else if (m.type === 'chat' && m.room === id) {
       chatLog.append(h('li', {}, h('strong', {}, m.from.name), ': ', m.text));
       chatLog.scrollTop = chatLog.scrollHeight;
+    } else if (m.type === 'error' && m.re !== undefined && chatIds.delete(String(m.re))) {
+      // A chat line refused (too fast, or not allowed here): said to its sender by the chat box.
+      chatNote.textContent = `${m.message.charAt(0).toUpperCase()}${m.message.slice(1)}.`;
     } else if (m.type === 'error' && m.code === 'no-room' && room === null) {
-      verdict.textContent = 'There is no such room.';
+      section.replaceChildren(h('h2', {}, 'No such room'), h('p', {}, 'This room does not exist or has closed. ', link('/', 'Back to the lobby'), '.'));
     }
   });
   const stopStatus = session.onStatus((s) => {
@@ -351,7 +434,10 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   const tick = setInterval(() => {
     // While the last shot's balls still roll the deadline is further off than the clock's length:
     // the clock shows full until they stop.
-    clock.textContent = deadline && room?.status === 'playing' ? `${Math.max(0, Math.min(room.shotClock, Math.ceil((deadline - Date.now()) / 1000)))} s` : '';
+    const left = deadline && room?.status === 'playing' ? Math.max(0, Math.min(room.shotClock, Math.ceil((deadline - Date.now()) / 1000))) : null;
+    clock.textContent = left === null ? '' : `${left} s`;
+    // The bar beside the seconds (no text of its own: the timer's text stays "N s").
+    if (left !== null && room) clock.append(clockBar(left / room.shotClock));
   }, 250);
   session.keep(`room:${id}`, { type: 'watch', room: id });
   return () => {
@@ -371,4 +457,13 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
 function guidanceOf(room: RoomView | null): Guidance {
   const g = (room as { guidance?: string } | null)?.guidance;
   return g === 'none' || g === 'path' ? g : 'contact';
+}
+
+/** The shot clock's bar: the time left as a fraction of the clock. */
+function clockBar(fraction: number): HTMLElement {
+  const bar = h('span', { className: 'clock-bar', 'aria-hidden': 'true' }, h('span', {}));
+  const fill = bar.firstChild as HTMLElement;
+  fill.style.width = `${Math.round(Math.max(0, Math.min(1, fraction)) * 100)}%`;
+  if (fraction <= 0.25) bar.classList.add('low');
+  return bar;
 }

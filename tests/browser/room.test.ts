@@ -1,6 +1,8 @@
 // A table in Chromium as a player uses it: a waiting table shows its invite link and can be
 // closed; a click holds the aim while the mouse goes to "Shoot"; after a shot the opponent's
-// clock counts from when the balls stop; a conceded match says so once, and its replay lists it.
+// clock counts from when the balls stop; a conceded match says so once, in a result dialog with
+// "Rematch" and "Lobby", and its replay lists it; a chat flood is told to its sender; an unknown
+// room has no chat.
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { ProtocolClient } from '../../bots/client.ts';
@@ -121,6 +123,10 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
     const { a, b, id } = await twoPlayers();
     const shoot = a.getByRole('button', { name: 'Shoot' });
     await expect.poll(() => shoot.isEnabled(), { timeout: 10_000 }).toBe(true);
+    // The player not on turn has no stroke controls on screen (hidden, not only disabled).
+    await expect.poll(() => b.getByRole('button', { name: 'Concede' }).isVisible(), { timeout: 10_000 }).toBe(true);
+    expect(await b.getByRole('button', { name: 'Shoot' }).isVisible()).toBe(false);
+    expect(await b.getByLabel('Power (m/s)').isVisible()).toBe(false);
     await shoot.click();
     await expect.poll(() => b.getByRole('button', { name: 'Concede' }).isVisible(), { timeout: 10_000 }).toBe(true);
     // One click asks again; only the second concedes.
@@ -132,9 +138,19 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
     // (One shot each at most: the match does not count for the ratings, and the page says so.)
     await expect.poll(() => said.textContent(), { timeout: 10_000 }).toMatch(/concedes; .+ wins\. Not rated: each player must take at least 3 shots\.$/);
     expect((await said.textContent())!.match(/wins/g)).toHaveLength(1);
+    // The result dialog, named by its heading, with the score, why it is not rated, and no cue left on screen.
+    const dialog = a.getByRole('dialog', { name: 'You win' });
+    await expect.poll(() => dialog.isVisible(), { timeout: 10_000 }).toBe(true);
+    expect(await dialog.textContent()).toMatch(/ 0 – 0 .+ \(racks\)Not rated: each player must take at least 3 shots\./);
+    await expect.poll(() => b.getByRole('dialog', { name: / wins$/ }).isVisible(), { timeout: 10_000 }).toBe(true);
+    for (const page of [a, b]) expect(await page.getByRole('button', { name: 'Shoot' }).isVisible()).toBe(false);
     // A rematch asked for by one is shown to the other.
-    await b.getByRole('button', { name: 'Rematch' }).click();
+    await b.getByRole('dialog').getByRole('button', { name: 'Rematch' }).click();
     await expect.poll(() => a.getByText(/asks for a rematch\.$/).count()).toBe(1);
+    await expect.poll(() => b.getByRole('button', { name: 'Rematch' }).getAttribute('aria-pressed')).toBe('true');
+    // "Lobby" goes back to the lobby.
+    await b.getByRole('dialog').getByRole('button', { name: 'Lobby' }).click();
+    await b.waitForURL(`${env.server.url}/`);
     const { matches } = (await (await fetch(`${env.server.url}/api/matches?limit=1`)).json()) as { matches: { id: number }[] };
     await a.goto(`${env.server.url}/match/${matches[0]!.id}`);
     const shots = a.getByRole('list', { name: 'Shots' }).getByRole('listitem');
@@ -142,6 +158,31 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
     expect(await shots.nth(1).textContent()).toMatch(/ conceded$/);
     await a.context().close();
     await b.context().close();
+  });
+
+  it('says a chat line refused as too fast to its sender, by the chat box', async () => {
+    const { a, b } = await twoPlayers();
+    const text = a.getByRole('textbox', { name: 'Message' });
+    await expect.poll(() => text.isVisible(), { timeout: 10_000 }).toBe(true);
+    for (let i = 0; i < 8; i++) {
+      await text.fill(`line ${i}`);
+      await text.press('Enter');
+    }
+    await expect.poll(() => a.getByRole('status').filter({ hasText: /^You are sending messages too fast; wait \d+ s\.$/ }).count(), { timeout: 10_000 }).toBe(1);
+    // Only the lines let through reach the other player.
+    await expect.poll(() => b.getByRole('list', { name: 'Chat' }).getByRole('listitem').count(), { timeout: 10_000 }).toBe(5);
+    await a.context().close();
+    await b.context().close();
+  });
+
+  it('an unknown room says so, with a link to the lobby and no chat', async () => {
+    const a = await player();
+    await a.goto(`${env.server.url}/room/no-such-room`);
+    await expect.poll(() => a.getByRole('heading', { name: 'No such room' }).count(), { timeout: 10_000 }).toBe(1);
+    expect(await a.getByRole('link', { name: 'Back to the lobby' }).getAttribute('href')).toBe('/');
+    expect(await a.getByRole('textbox', { name: 'Message' }).count()).toBe(0);
+    expect(await a.getByRole('button', { name: 'Send' }).count()).toBe(0);
+    await a.context().close();
   });
 
   it('keeps a race the player typed across a change of game, and takes the default for an empty one', async () => {
