@@ -126,7 +126,7 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
     // The player not on turn has no stroke controls on screen (hidden, not only disabled).
     await expect.poll(() => b.getByRole('button', { name: 'Concede' }).isVisible(), { timeout: 10_000 }).toBe(true);
     expect(await b.getByRole('button', { name: 'Shoot' }).isVisible()).toBe(false);
-    expect(await b.getByLabel('Power (m/s)').isVisible()).toBe(false);
+    expect(await b.getByLabel('Power', { exact: true }).isVisible()).toBe(false);
     await shoot.click();
     await expect.poll(() => b.getByRole('button', { name: 'Concede' }).isVisible(), { timeout: 10_000 }).toBe(true);
     // One click asks again; only the second concedes.
