@@ -55,8 +55,9 @@ export class TableView {
     const worldH = this.turned ? long : short;
     // At most 70% of the window's height, and on a short window low enough that the controls
     // below it fit on the same screen; on a phone on its side (controls beside it) the height
-    // below the page's header; turned upright, the screen's height (the page scrolls to it).
-    const top = Math.min(parent.getBoundingClientRect().top + window.scrollY, window.innerHeight * 0.3);
+    // below what stands above it, so that a touch on it never scrolls the page; turned upright,
+    // the screen's height (the page scrolls to it).
+    const top = parent.getBoundingClientRect().top + window.scrollY;
     const room = this.turned
       ? window.innerHeight - 16
       : matchMedia(SIDEWAYS_PHONE).matches
