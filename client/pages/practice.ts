@@ -24,6 +24,7 @@ import { storedToken } from '../net/session.ts';
 import { Aim } from '../table/aim.ts';
 import { Animator } from '../table/animator.ts';
 import { spaceShoots, strokeControls } from '../table/controls.ts';
+import { Tray } from '../table/tray.ts';
 import { TableView } from '../table/view.ts';
 import { inWords } from '../verdict.ts';
 
@@ -43,6 +44,7 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
   const replayButton = h('button', { type: 'button', onclick: () => last && void animator.play(last) }, 'Replay');
   const submit = h('button', { type: 'button', onclick: () => void send() }, 'Submit run');
   const start = h('button', { type: 'button', onclick: () => reset() }, 'New table');
+  const tray = new Tray();
   root.append(
     h(
       'section',
@@ -50,6 +52,7 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
       h('h2', {}, 'Practice'),
       h('p', {}, mode, ' ', layout, ' ', runKind, ' ', start, ' ', h('label', {}, placing, ' Place balls')),
       tableBox,
+      tray.element,
       h('p', {}, undoButton, ' ', replayButton, ' ', submit),
       info,
     ),
@@ -95,6 +98,7 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
     });
     controls!.enable(active);
     view!.draw(aim!.balls());
+    tray.update(game, animator.pocketOrder);
     layout.hidden = mode.value !== 'free';
     runKind.hidden = mode.value !== 'run';
     submit.hidden = mode.value !== 'run';

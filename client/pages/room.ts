@@ -10,6 +10,7 @@ import type { PageContext } from '../main.ts';
 import { Aim, type Guidance } from '../table/aim.ts';
 import { Animator } from '../table/animator.ts';
 import { spaceShoots, strokeControls } from '../table/controls.ts';
+import { Tray } from '../table/tray.ts';
 import { TableView } from '../table/view.ts';
 import { inWords } from '../verdict.ts';
 
@@ -51,6 +52,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   const clock = h('p', { className: 'clock', role: 'timer', 'aria-label': 'Shot clock' });
   const verdict = h('p', { className: 'verdict', role: 'status', 'aria-label': 'Referee' });
   const tableBox = h('div', { className: 'table-box' });
+  const tray = new Tray();
   const actions = h('div', { className: 'actions' });
   const declarations = h('div', { className: 'declarations' });
   const chatLog = h('ul', { className: 'chat', 'aria-label': 'Chat' });
@@ -62,7 +64,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     if (chatText.value.trim()) session.send({ type: 'chat', room: id, text: chatText.value });
     chatText.value = '';
   });
-  root.append(h('section', { className: 'room', 'aria-label': 'Room' }, title, banner, players, clock, tableBox, declarations, actions, verdict, chatLog, chat));
+  root.append(h('section', { className: 'room', 'aria-label': 'Room' }, title, banner, players, clock, tableBox, tray.element, declarations, actions, verdict, chatLog, chat));
 
   const me = () => session.player?.id;
   const seated = () => !!room?.players.some((p) => p.id === me());
@@ -164,6 +166,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
       });
       controls!.enable(myTurn());
       controls!.element.hidden = !seated(); // a spectator has no cue
+      if (!busy) tray.update(g, animator!.pocketOrder);
       redraw();
     }
   };

@@ -5,6 +5,7 @@
 // same physics the server runs).
 import { sampleOutcome, simulate, type Outcome } from '../../shared/physics/index.ts';
 import { placementProblem, type Game } from '../../shared/rules/index.ts';
+import { drawLegalArea } from './draw.ts';
 import type { TableView } from './view.ts';
 
 export type Guidance = 'none' | 'contact' | 'path';
@@ -157,6 +158,7 @@ export class Aim {
   draw(ctx: CanvasRenderingContext2D): void {
     const cue = this.cuePosition();
     if (!this.active || !cue || !this.game) return;
+    if (this.game.ballInHand !== false) drawLegalArea(ctx, this.view.spec, this.game.ballInHand);
     const R = this.view.spec.ballRadius;
     ctx.strokeStyle = 'rgba(255,255,255,0.7)';
     ctx.lineWidth = 2 / this.view.pixelsPerMetre;
