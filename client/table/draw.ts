@@ -62,7 +62,7 @@ export function drawTable(ctx: CanvasRenderingContext2D, table: TableSpec): void
   for (const h of holes) {
     ctx.fillStyle = '#3a2414';
     ctx.beginPath();
-    ctx.arc(h.x, h.y, h.r + LEATHER, 0, 2 * Math.PI);
+    ctx.ellipse(h.x, h.y, h.r + LEATHER, h.w + LEATHER, Math.atan2(h.by, h.bx), 0, 2 * Math.PI);
     ctx.fill();
     ctx.strokeStyle = 'rgba(255,225,180,0.35)';
     ctx.lineWidth = 1.5 / pixelsPerUnit(ctx);
@@ -95,14 +95,20 @@ export function drawTable(ctx: CanvasRenderingContext2D, table: TableSpec): void
   roundRect(ctx, -L - RAIL, -W - RAIL, 2 * (L + RAIL), 2 * (W + RAIL), 0.04);
   ctx.clip();
   for (const h of holes) {
-    const g = ctx.createRadialGradient(h.x + h.bx * h.r * 0.3, h.y + h.by * h.r * 0.3, h.r * 0.45, h.x, h.y, h.r);
+    // In the hole's frame: x backwards (depth, radius r), y across the throat (half-width w).
+    ctx.save();
+    ctx.translate(h.x, h.y);
+    ctx.rotate(Math.atan2(h.by, h.bx));
+    ctx.scale(h.r, h.w);
+    const g = ctx.createRadialGradient(0.3, 0, 0.45, 0, 0, 1);
     g.addColorStop(0, '#020202');
     g.addColorStop(0.55, '#0d0a08');
     g.addColorStop(1, '#3b2f26');
     ctx.fillStyle = g;
     ctx.beginPath();
-    ctx.arc(h.x, h.y, h.r, 0, 2 * Math.PI);
+    ctx.arc(0, 0, 1, 0, 2 * Math.PI);
     ctx.fill();
+    ctx.restore();
   }
   ctx.restore();
   // The cushions: cloth on the rubber, darker, their noses and rounded jaws outlined.
@@ -130,9 +136,10 @@ const LEATHER = 0.012;
 
 /**
  * A pocket's hole: from the drop circle's front edge (where a ball falls) back, a little wider than
- * the drop circle where the rail leaves room, else as wide as fits inside the table's edge.
+ * the drop circle where the rail leaves room, else as deep as fits inside the table's edge and as
+ * wide as the throat (an ellipse).
  */
-function pocketHole(p: TableSpec['pockets'][number], L: number, W: number): { x: number; y: number; r: number; bx: number; by: number } {
+function pocketHole(p: TableSpec['pockets'][number], L: number, W: number): { x: number; y: number; r: number; w: number; bx: number; by: number } {
   const m = p.mouth;
   // The throat's middle (between the ends of the jaw faces) to the drop circle's centre: backwards.
   const tx = (m[2]! + m[4]!) / 2;
@@ -144,7 +151,9 @@ function pocketHole(p: TableSpec['pockets'][number], L: number, W: number): { x:
   const fy = Math.abs(p.y - p.r * by);
   let r = p.r * 1.08;
   r = Math.min(r, (L + RAIL - LEATHER - fx) / (1 + Math.abs(bx)), (W + RAIL - LEATHER - fy) / (1 + Math.abs(by)));
-  return { x: p.x - p.r * bx + r * bx, y: p.y - p.r * by + r * by, r, bx, by };
+  // Where the rail leaves less depth than the throat is wide (a middle pocket), as wide as the throat.
+  const w = Math.max(r, 0.95 * Math.hypot(m[4]! - m[2]!, m[5]! - m[3]!) / 2);
+  return { x: p.x - p.r * bx + r * bx, y: p.y - p.r * by + r * by, r, w, bx, by };
 }
 
 interface JawEnd {
@@ -299,7 +308,7 @@ const NUMBER_FACES: readonly (readonly [Vec3, Vec3, Vec3])[] = [
   [[0, 0, 1], [1, 0, 0], [0, 1, 0]],
   [[0, 0, -1], [1, 0, 0], [0, -1, 0]],
 ];
-const SPOT = 0.13;
+const SPOT = 0.2;
 const SPOTS: readonly (readonly [Vec3, Vec3, Vec3])[] = [
   ...NUMBER_FACES,
   [[1, 0, 0], [0, 1, 0], [0, 0, 1]],
