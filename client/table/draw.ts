@@ -309,13 +309,20 @@ const NUMBER_FACES: readonly (readonly [Vec3, Vec3, Vec3])[] = [
   [[0, 0, -1], [1, 0, 0], [0, -1, 0]],
 ];
 const SPOT = 0.2;
-const SPOTS: readonly (readonly [Vec3, Vec3, Vec3])[] = [
-  ...NUMBER_FACES,
-  [[1, 0, 0], [0, 1, 0], [0, 0, 1]],
-  [[-1, 0, 0], [0, -1, 0], [0, 0, 1]],
-  [[0, 1, 0], [0, 0, 1], [1, 0, 0]],
-  [[0, -1, 0], [0, 0, -1], [1, 0, 0]],
-];
+/** A mark centred on c, with some tangent frame (a spot is round: any will do). */
+function frameAt(c: Vec3): readonly [Vec3, Vec3, Vec3] {
+  const a: Vec3 = Math.abs(c[2]) < 0.9 ? [0, 0, 1] : [1, 0, 0];
+  const rx = a[1] * c[2] - a[2] * c[1];
+  const ry = a[2] * c[0] - a[0] * c[2];
+  const rz = a[0] * c[1] - a[1] * c[0];
+  const n = Math.hypot(rx, ry, rz);
+  const r: Vec3 = [rx / n, ry / n, rz / n];
+  return [c, r, [c[1] * r[2] - c[2] * r[1], c[2] * r[0] - c[0] * r[2], c[0] * r[1] - c[1] * r[0]]];
+}
+// Six spots, on three axes at right angles, none of them on top of a ball not yet turned (so an
+// upright cue ball is white in the middle).
+const S = Math.SQRT1_2;
+const SPOTS = ([[S, 0, S], [-S, 0, -S], [0, 1, 0], [0, -1, 0], [-S, 0, S], [S, 0, -S]] as const).map((c) => frameAt(c));
 
 export function drawBall(ctx: CanvasRenderingContext2D, b: DrawnBall, R: number): void {
   const look = ballLook(b.id);
