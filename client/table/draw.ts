@@ -380,7 +380,7 @@ export function drawBall(ctx: CanvasRenderingContext2D, b: DrawnBall, R: number)
 
 function drawNumber(ctx: CanvasRenderingContext2D, q: Quat, f: readonly [Vec3, Vec3, Vec3], n: number): void {
   const { m, facing } = markFrame(q, f[0], f[1], f[2], NUMBER_DISC);
-  if (facing < -0.5) return;
+  if (facing < -0.25) return;
   ctx.save();
   ctx.transform(...m);
   ctx.fillStyle = '#f8f6ef';
