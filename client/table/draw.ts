@@ -236,23 +236,34 @@ function drawSnookerMarks(ctx: CanvasRenderingContext2D, table: TableSpec): void
   ctx.stroke();
 }
 
-/**
- * Where a ball in hand may go, shaded and outlined: behind the head string (the kitchen), in the
- * D, or anywhere on the bed; the region its centre may take (shared/rules/placement.ts, inArea).
- */
+/** The region a ball in hand's centre may take: a rectangle, or the D (a half disc behind x = cx). */
+export type LegalShape =
+  | { readonly kind: 'rect'; readonly x0: number; readonly y0: number; readonly x1: number; readonly y1: number }
+  | { readonly kind: 'D'; readonly cx: number; readonly r: number };
+
+/** The area of shared/rules/placement.ts (inArea) as a shape: the kitchen, the D or the whole bed. */
+export function legalShape(table: TableSpec, area: Exclude<BallInHand, false>): LegalShape {
+  const L = table.length / 2 - table.ballRadius;
+  const W = table.width / 2 - table.ballRadius;
+  if (area === 'kitchen') return { kind: 'rect', x0: -L, y0: -W, x1: poolMarks(table).headStringX, y1: W };
+  if (area === 'D') {
+    const m = snookerMarks(table);
+    return { kind: 'D', cx: m.baulkX, r: m.dRadius };
+  }
+  return { kind: 'rect', x0: -L, y0: -W, x1: L, y1: W };
+}
+
+/** Where a ball in hand may go (legalShape), shaded and outlined. */
 export function drawLegalArea(ctx: CanvasRenderingContext2D, table: TableSpec, area: Exclude<BallInHand, false>): void {
-  const R = table.ballRadius;
-  const L = table.length / 2 - R;
-  const W = table.width / 2 - R;
+  const s = legalShape(table, area);
   ctx.save();
   ctx.beginPath();
-  if (area === 'kitchen') ctx.rect(-L, -W, poolMarks(table).headStringX + L, 2 * W);
-  else if (area === 'D') {
-    const m = snookerMarks(table);
-    ctx.moveTo(m.baulkX, m.dRadius);
-    ctx.arc(m.baulkX, 0, m.dRadius, Math.PI / 2, (3 * Math.PI) / 2);
+  if (s.kind === 'rect') ctx.rect(s.x0, s.y0, s.x1 - s.x0, s.y1 - s.y0);
+  else {
+    ctx.moveTo(s.cx, s.r);
+    ctx.arc(s.cx, 0, s.r, Math.PI / 2, (3 * Math.PI) / 2);
     ctx.closePath();
-  } else ctx.rect(-L, -W, 2 * L, 2 * W);
+  }
   ctx.fillStyle = 'rgba(255,255,255,0.09)';
   ctx.fill();
   ctx.strokeStyle = 'rgba(255,255,255,0.75)';
