@@ -129,6 +129,10 @@ export function drawTable(ctx: CanvasRenderingContext2D, table: TableSpec): void
   }
   if (table.name !== 'snooker-12ft') drawDiamonds(ctx, L, W, table.pockets.length > 0);
   else drawSnookerMarks(ctx, table);
+  // The spots marked on the cloth: pool's head and foot spots, snooker's colour spots.
+  ctx.fillStyle = 'rgba(255,255,255,0.55)';
+  const spots = table.name === 'snooker-12ft' ? Object.values(snookerMarks(table).spots) : table.name === 'pool-9ft' ? [poolMarks(table).footSpot, poolMarks(table).headSpot] : [];
+  for (const p of spots) dot(ctx, p.x, p.y, 0.004);
 }
 
 /** Room left for the leather round a hole, inside the table's edge (m). */
