@@ -35,14 +35,15 @@ export interface BallLook {
   readonly spots: string | null;
 }
 
-export function ballLook(id: string): BallLook {
+/** `table`: on a carom table the yellow is a cue ball too, and carries spots. */
+export function ballLook(id: string, table?: string): BallLook {
   const n = Number(id);
   const numbered = Number.isInteger(n) && n >= 1 && n <= 15;
   return {
     colour: ballColour(id),
     stripe: numbered && n >= 9,
     number: numbered ? n : null,
-    spots: id === 'cue' || id === 'white' ? '#c0392b' : null,
+    spots: id === 'cue' || id === 'white' || (id === 'yellow' && table === 'carom-match') ? '#c0392b' : null,
   };
 }
 

@@ -339,8 +339,8 @@ function frameAt(c: Vec3): readonly [Vec3, Vec3, Vec3] {
 const S = Math.SQRT1_2;
 const SPOTS = ([[S, 0, S], [-S, 0, -S], [0, 1, 0], [0, -1, 0], [-S, 0, S], [S, 0, -S]] as const).map((c) => frameAt(c));
 
-export function drawBall(ctx: CanvasRenderingContext2D, b: DrawnBall, R: number): void {
-  const look = ballLook(b.id);
+export function drawBall(ctx: CanvasRenderingContext2D, b: DrawnBall, R: number, table?: string): void {
+  const look = ballLook(b.id, table);
   const q = b.q ?? IDENTITY;
   const sink = b.sink ?? 0;
   ctx.save();

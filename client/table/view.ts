@@ -81,9 +81,9 @@ export class TableView {
     if (!bg) drawTable(ctx, this.spec);
     const R = this.spec.ballRadius;
     // Dropping balls first: they are below the cloth's level, under any ball still rolling.
-    for (const b of balls) if (b.sink) drawBall(ctx, b.q ? b : { ...b, q: this.orientations.get(b.id) }, R);
+    for (const b of balls) if (b.sink) drawBall(ctx, b.q ? b : { ...b, q: this.orientations.get(b.id) }, R, this.spec.name);
     for (const b of balls) drawShadow(ctx, b, R);
-    for (const b of balls) if (!b.sink) drawBall(ctx, b.q ? b : { ...b, q: this.orientations.get(b.id) }, R);
+    for (const b of balls) if (!b.sink) drawBall(ctx, b.q ? b : { ...b, q: this.orientations.get(b.id) }, R, this.spec.name);
     this.overlay?.(ctx, this);
   }
 

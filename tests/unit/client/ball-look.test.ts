@@ -3,12 +3,15 @@ import { describe, expect, it } from 'vitest';
 import { ballLook, capView } from '../../../client/table/ball-look.ts';
 
 describe('ball look', () => {
-  it('stripes 9-15, numbers 1-15, spots the cue balls only', () => {
+  it('stripes 9-15, numbers 1-15, spots the cue balls only (on a carom table the yellow too)', () => {
     expect(ballLook('9')).toMatchObject({ stripe: true, number: 9, spots: null });
     expect(ballLook('1')).toMatchObject({ stripe: false, number: 1, colour: ballLook('9').colour });
     expect(ballLook('cue').spots).not.toBeNull();
     expect(ballLook('white').spots).not.toBeNull();
     expect(ballLook('red7')).toMatchObject({ stripe: false, number: null, spots: null });
+    // The yellow is a cue ball on a carom table only.
+    expect(ballLook('yellow', 'carom-match').spots).not.toBeNull();
+    expect(ballLook('yellow', 'snooker-12ft').spots).toBeNull();
   });
 });
 
