@@ -26,6 +26,7 @@ import { Animator } from '../table/animator.ts';
 import { spaceShoots, strokeControls } from '../table/controls.ts';
 import { Pace } from '../table/pace.ts';
 import { SoundPlayer, soundToggle } from '../table/sound.ts';
+import { Tray } from '../table/tray.ts';
 import { TableView } from '../table/view.ts';
 import { verdictSentence } from '../verdict.ts';
 
@@ -45,6 +46,7 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
   const replayButton = h('button', { type: 'button', onclick: () => last && void pace.play(last) }, 'Replay');
   const submit = h('button', { type: 'button', onclick: () => void send() }, 'Submit run');
   const start = h('button', { type: 'button', onclick: () => reset() }, 'New table');
+  const tray = new Tray();
   root.append(
     h(
       'section',
@@ -52,6 +54,7 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
       h('h2', {}, 'Practice'),
       h('p', {}, mode, ' ', layout, ' ', runKind, ' ', start, ' ', h('label', {}, placing, ' Place balls')),
       tableBox,
+      tray.element,
       h('p', {}, undoButton, ' ', replayButton, ' ', submit),
       info,
     ),
@@ -101,6 +104,7 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
     });
     controls!.enable(active);
     view!.draw(aim!.balls());
+    tray.update(game, animator.pocketOrder);
     layout.hidden = mode.value !== 'free';
     runKind.hidden = mode.value !== 'run';
     submit.hidden = mode.value !== 'run';

@@ -12,6 +12,7 @@ import { Animator } from '../table/animator.ts';
 import { spaceShoots, strokeControls } from '../table/controls.ts';
 import { Pace } from '../table/pace.ts';
 import { SoundPlayer, soundToggle } from '../table/sound.ts';
+import { Tray } from '../table/tray.ts';
 import { TableView } from '../table/view.ts';
 import { api } from '../net/api.ts';
 import { howOf, type RoomRatings } from '../room/state.ts';
@@ -63,6 +64,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   const clock = h('p', { className: 'clock', role: 'timer', 'aria-label': 'Shot clock' });
   const verdict = h('p', { className: 'verdict', role: 'status', 'aria-label': 'Referee' });
   const tableBox = h('div', { className: 'table-box' });
+  const tray = new Tray();
   const actions = h('div', { className: 'actions' });
   const declarations = h('div', { className: 'declarations' });
   const chatLog = h('ul', { className: 'chat', 'aria-label': 'Chat' });
@@ -85,7 +87,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   // The chat shows once the room is known (an unknown room has none).
   chatLog.hidden = true;
   chat.hidden = true;
-  const section = h('section', { className: 'room', 'aria-label': 'Room' }, title, banner, players, scoreboard, clock, tableBox, declarations, warning, actions, verdict, result, chatLog, chat);
+  const section = h('section', { className: 'room', 'aria-label': 'Room' }, title, banner, players, scoreboard, clock, tableBox, tray.element, declarations, warning, actions, verdict, result, chatLog, chat);
   root.append(section);
   // Every shot animates through the pace (fast forward) with its sounds.
   const sound = new SoundPlayer();
@@ -212,6 +214,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
       // No cue for a spectator, nor while it is the other player's turn or the game is over.
       controls!.element.hidden = !seated() || room.status !== 'playing' || g.winner !== null || g.turn !== me();
       warn();
+      if (!busy) tray.update(g, animator!.pocketOrder);
       redraw();
     }
   };

@@ -7,6 +7,7 @@
 import { sampleOutcome, simulate, type Outcome } from '../../shared/physics/index.ts';
 import { placementProblem, type Game } from '../../shared/rules/index.ts';
 import { CANCEL_PX, DECIDE_PX, drawCue, fullPull, goesBack, MAX_SPEED, MIN_SPEED, onStick, powerFraction, powerWords, pullBack, pullToSpeed, speedToGap } from './cue.ts';
+import { drawLegalArea } from './draw.ts';
 import type { TableView } from './view.ts';
 
 export { MAX_SPEED, MIN_SPEED };
@@ -231,6 +232,7 @@ export class Aim {
   draw(ctx: CanvasRenderingContext2D): void {
     const cue = this.cuePosition();
     if (!this.active || !cue || !this.game) return;
+    if (this.game.ballInHand !== false) drawLegalArea(ctx, this.view.spec, this.game.ballInHand);
     const R = this.view.spec.ballRadius;
     this.drawGuidance(ctx, cue, R);
     // While pulling, the tip follows the pull; else it stands off by the gap the power gives.

@@ -1,7 +1,8 @@
 // A table on a canvas fitted to its container and sharp on high-DPI screens: the world (metres,
 // y up, origin at the table's centre) mapped to device pixels, redrawn on demand.
 import { tableSpec, type TableSpec } from '../../shared/physics/index.ts';
-import { drawBall, drawTable, RAIL, type DrawnBall } from './draw.ts';
+import { drawBall, drawShadow, drawTable, RAIL, type DrawnBall } from './draw.ts';
+import { Orientations } from './orientation.ts';
 
 export type Overlay = (ctx: CanvasRenderingContext2D, view: TableView) => void;
 
@@ -19,6 +20,10 @@ export class TableView {
   private balls: readonly DrawnBall[] = [];
   private overlay: Overlay | undefined;
   private readonly resize: ResizeObserver;
+  /** The table without balls, drawn once per canvas size. */
+  private background: HTMLCanvasElement | null = null;
+  /** How each ball is turned, kept between shots (the animator turns them). */
+  readonly orientations = new Orientations();
 
   constructor(parent: HTMLElement, table: string, label: string) {
     this.spec = tableSpec(table);
@@ -73,6 +78,7 @@ export class TableView {
     this.scale = cssW / worldW;
     // The balls' size on screen, for tests and tools: numbers need a few pixels to be read.
     this.canvas.dataset.ballRadius = (this.spec.ballRadius * this.scale).toFixed(1);
+    this.background = null;
     this.draw(this.balls);
   }
 
@@ -80,19 +86,46 @@ export class TableView {
     this.overlay = overlay;
   }
 
+  /** Draws the table and the balls (each turned as `orientations` holds unless it says), then the overlay. */
   draw(balls: readonly DrawnBall[]): void {
     this.balls = balls;
     const ctx = this.canvas.getContext('2d');
     if (!ctx) return;
     const dpr = this.canvas.width / (parseFloat(this.canvas.style.width) || this.canvas.width);
+    const toWorld = () => this.toWorldTransform(ctx, dpr);
     ctx.setTransform(1, 0, 0, 1, 0, 0);
     ctx.clearRect(0, 0, this.canvas.width, this.canvas.height);
-    const k = this.scale * dpr;
-    if (this.turned) ctx.setTransform(0, -k, -k, 0, this.canvas.width / 2, this.canvas.height / 2);
-    else ctx.setTransform(k, 0, 0, -k, this.canvas.width / 2, this.canvas.height / 2);
-    drawTable(ctx, this.spec);
-    for (const b of balls) drawBall(ctx, b, this.spec.ballRadius);
+    const bg = this.tableImage(dpr);
+    if (bg) ctx.drawImage(bg, 0, 0);
+    toWorld();
+    if (!bg) drawTable(ctx, this.spec);
+    const R = this.spec.ballRadius;
+    // Dropping balls first: they are below the cloth's level, under any ball still rolling.
+    for (const b of balls) if (b.sink) drawBall(ctx, b.q ? b : { ...b, q: this.orientations.get(b.id) }, R, this.spec.name);
+    for (const b of balls) drawShadow(ctx, b, R);
+    for (const b of balls) if (!b.sink) drawBall(ctx, b.q ? b : { ...b, q: this.orientations.get(b.id) }, R, this.spec.name);
     this.overlay?.(ctx, this);
+  }
+
+  /** Metres to device pixels, y up, the origin at the centre; turned a quarter upright on a phone. */
+  private toWorldTransform(c: CanvasRenderingContext2D, dpr: number): void {
+    const k = this.scale * dpr;
+    if (this.turned) c.setTransform(0, -k, -k, 0, c.canvas.width / 2, c.canvas.height / 2);
+    else c.setTransform(k, 0, 0, -k, c.canvas.width / 2, c.canvas.height / 2);
+  }
+
+  /** The table drawn once at this size (a copy per frame is cheaper than drawing it). */
+  private tableImage(dpr: number): HTMLCanvasElement | null {
+    if (this.background && this.background.width === this.canvas.width && this.background.height === this.canvas.height) return this.background;
+    const bg = document.createElement('canvas');
+    bg.width = this.canvas.width;
+    bg.height = this.canvas.height;
+    const c = bg.getContext('2d');
+    if (!c) return null;
+    this.toWorldTransform(c, dpr);
+    drawTable(c, this.spec);
+    this.background = bg;
+    return bg;
   }
 
   /** The world point under a pointer event's client coordinates. */
