@@ -1,4 +1,5 @@
-// npm run screenshots — docs/screenshots/{lobby,table,leaderboard}.png from a real server and
+// npm run screenshots — docs/screenshots/*.png (lobby, table, stroke, ball in hand, result, pot and
+// tray, help, phone, leaderboard, lab) from a real server and
 // Debian's Chromium: a few rooms and rated matches made by protocol clients, then the pages.
 import { mkdirSync } from 'node:fs';
 import { join, resolve } from 'node:path';
@@ -9,9 +10,28 @@ import { openDatabase } from '../server/database.ts';
 import { Store } from '../server/store.ts';
 import { hashToken } from '../server/tokens.ts';
 import { buildClient } from './build-client.ts';
+import { RAIL } from '../client/table/draw.ts';
+import { tableSpec } from '../shared/physics/index.ts';
+import { cueBallId, newGame, playShot } from '../shared/rules/index.ts';
 import { ROOT, startServerProcess, tempDir } from '../tests/support/server-process.ts';
 
 const OUT = resolve(ROOT, 'docs/screenshots');
+
+/** Keys that aim the practice table's first break (nine-ball, seed 1) to pot two balls or more, not the cue ball. */
+function pottingBreak(): string[] {
+  const g = newGame('practice', ['me'], { layout: 'nineball' });
+  let speed = 2.5;
+  for (let i = 0; i < 30; i++) speed = Math.min(10, speed + 0.25);
+  for (let n = 0; n <= 40; n++) {
+    for (const [key, sign] of [['ArrowLeft', 1], ['ArrowRight', -1]] as const) {
+      let heading = 0;
+      for (let i = 0; i < n; i++) heading += sign * 0.008;
+      const pots = playShot(g, { ball: cueBallId(g), heading, speed, side: 0, top: 0, player: 'me' }).outcome.events.filter((e) => e.kind === 'pocket').map((e) => e.balls[0]);
+      if (pots.length >= 2 && !pots.includes('cue')) return [...Array<string>(30).fill('ArrowUp'), ...Array<string>(n).fill(key)];
+    }
+  }
+  throw new Error('no potting break found');
+}
 await buildClient();
 mkdirSync(OUT, { recursive: true });
 const names = ['Ronnie', 'Efren', 'Shane', 'Jasmin', 'Torbjörn', 'Kelly'];
@@ -77,12 +97,59 @@ try {
   // A table mid-game: this page breaks against a protocol client in the other seat.
   await page.getByRole('button', { name: 'Create table' }).click();
   await page.waitForURL(/\/room\//);
+  const roomId = page.url().split('/').at(-1)!;
   const opponent = await player('Allison');
-  await opponent.c.request({ type: 'join', room: page.url().split('/').at(-1)! });
+  await opponent.c.request({ type: 'join', room: roomId });
   await page.waitForFunction(() => !(document.querySelector('button.shoot') as HTMLButtonElement).disabled);
+  // The break from the kitchen: the ball in hand with its legal area drawn.
+  await page.screenshot({ path: join(OUT, 'ball-in-hand.png') });
+  // The stroke being drawn back: pressed on the cue ball and pulled straight back, not let go.
+  const canvas = (await page.locator('canvas.table').boundingBox())!;
+  const g = newGame('nineball', ['a', 'b'], { seed: 1 });
+  const cue = g.balls.find((b) => b.id === 'cue')!;
+  const k = canvas.width / (tableSpec(g.table).length + 2 * RAIL);
+  const at = { x: canvas.x + canvas.width / 2 + cue.x * k, y: canvas.y + canvas.height / 2 - cue.y * k };
+  await page.mouse.move(at.x, at.y);
+  await page.mouse.down();
+  for (let i = 1; i <= 8; i++) await page.mouse.move(at.x - 12 * i, at.y);
+  await page.screenshot({ path: join(OUT, 'stroke.png') });
+  await page.mouse.move(at.x, at.y);
+  await page.mouse.up();
   await page.getByRole('button', { name: 'Shoot' }).click();
   await page.waitForTimeout(1200);
   await page.screenshot({ path: join(OUT, 'table.png') });
+  // The end: the opponent concedes; the result dialog.
+  await opponent.c.request({ type: 'concede', room: roomId });
+  await page.getByRole('dialog').waitFor({ timeout: 30_000 });
+  await page.waitForTimeout(500);
+  await page.screenshot({ path: join(OUT, 'result.png') });
+
+  // A pot and the tray: the practice table's first break aimed by the keys to pot two balls or more.
+  await page.goto(`${server.url}/practice`);
+  await page.waitForSelector('canvas.table');
+  await page.locator('canvas.table').focus();
+  for (const key of pottingBreak()) await page.keyboard.press(key);
+  await page.getByRole('button', { name: 'Shoot' }).click();
+  await page.getByRole('list', { name: 'Pocketed' }).getByRole('listitem').nth(1).waitFor({ timeout: 30_000 });
+  await page.waitForTimeout(300);
+  await page.screenshot({ path: join(OUT, 'pot-tray.png') });
+
+  await page.goto(`${server.url}/help`);
+  await page.getByRole('heading', { name: 'Snooker' }).waitFor();
+  await page.screenshot({ path: join(OUT, 'help.png') });
+
+  // A phone on its side, in a room.
+  const phoneCtx = await browser.newContext({ viewport: { width: 844, height: 390 }, hasTouch: true, isMobile: true, deviceScaleFactor: 2 });
+  const phone = await phoneCtx.newPage();
+  await phone.goto(`${server.url}/`);
+  await phone.getByRole('button', { name: 'Create table' }).click();
+  await phone.waitForURL(/\/room\//);
+  const other = await player('Karen');
+  await other.c.request({ type: 'join', room: phone.url().split('/').at(-1)! });
+  await phone.getByRole('button', { name: 'Shoot' }).waitFor();
+  await phone.waitForTimeout(500);
+  await phone.screenshot({ path: join(OUT, 'phone.png') });
+  await phoneCtx.close();
 
   await page.goto(`${server.url}/leaderboard?kind=nineball`);
   await page.waitForSelector('table.board tbody tr');
