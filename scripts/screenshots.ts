@@ -132,7 +132,8 @@ try {
   await page.getByRole('button', { name: 'Shoot' }).click();
   await page.getByRole('list', { name: 'Pocketed' }).getByRole('listitem').nth(1).waitFor({ timeout: 30_000 });
   await page.waitForTimeout(300);
-  await page.screenshot({ path: join(OUT, 'pot-tray.png') });
+  await page.getByRole('list', { name: 'Pocketed' }).scrollIntoViewIfNeeded();
+  await page.screenshot({ path: join(OUT, 'pot-tray.png'), fullPage: true });
 
   await page.goto(`${server.url}/help`);
   await page.getByRole('heading', { name: 'Snooker' }).waitFor();
