@@ -12,26 +12,11 @@ import { hashToken } from '../server/tokens.ts';
 import { buildClient } from './build-client.ts';
 import { RAIL } from '../client/table/draw.ts';
 import { tableSpec } from '../shared/physics/index.ts';
-import { cueBallId, newGame, playShot } from '../shared/rules/index.ts';
+import { newGame } from '../shared/rules/index.ts';
+import { pottingBreak } from '../tests/support/potting-break.ts';
 import { ROOT, startServerProcess, tempDir } from '../tests/support/server-process.ts';
 
 const OUT = resolve(ROOT, 'docs/screenshots');
-
-/** Keys that aim the practice table's first break (nine-ball, seed 1) to pot two balls or more, not the cue ball. */
-function pottingBreak(): string[] {
-  const g = newGame('practice', ['me'], { layout: 'nineball' });
-  let speed = 2.5;
-  for (let i = 0; i < 30; i++) speed = Math.min(10, speed + 0.25);
-  for (let n = 0; n <= 40; n++) {
-    for (const [key, sign] of [['ArrowLeft', 1], ['ArrowRight', -1]] as const) {
-      let heading = 0;
-      for (let i = 0; i < n; i++) heading += sign * 0.008;
-      const pots = playShot(g, { ball: cueBallId(g), heading, speed, side: 0, top: 0, player: 'me' }).outcome.events.filter((e) => e.kind === 'pocket').map((e) => e.balls[0]);
-      if (pots.length >= 2 && !pots.includes('cue')) return [...Array<string>(30).fill('ArrowUp'), ...Array<string>(n).fill(key)];
-    }
-  }
-  throw new Error('no potting break found');
-}
 await buildClient();
 mkdirSync(OUT, { recursive: true });
 const names = ['Ronnie', 'Efren', 'Shane', 'Jasmin', 'Torbjörn', 'Kelly'];
@@ -128,7 +113,7 @@ try {
   await page.goto(`${server.url}/practice`);
   await page.waitForSelector('canvas.table');
   await page.locator('canvas.table').focus();
-  for (const key of pottingBreak()) await page.keyboard.press(key);
+  for (const key of pottingBreak().presses) await page.keyboard.press(key);
   await page.getByRole('button', { name: 'Shoot' }).click();
   await page.getByRole('list', { name: 'Pocketed' }).getByRole('listitem').nth(1).waitFor({ timeout: 30_000 });
   await page.waitForTimeout(300);
