@@ -10,9 +10,7 @@
 import type { Socket } from 'node:net';
 import { parseArgs } from 'node:util';
 import { WebSocket } from 'ws';
-import { chooseShot } from '../bots/strategy.ts';
-import { simulate } from '../shared/physics/index.ts';
-import { playShot, practiceStart, type Game, type PracticeShot } from '../shared/rules/index.ts';
+import { snookerBreak } from '../tests/support/snooker-break.ts';
 
 const { values } = parseArgs({
   options: { attack: { type: 'string' }, url: { type: 'string' }, seconds: { type: 'string', default: '20' } },
@@ -104,34 +102,10 @@ async function flood(until: number): Promise<void> {
   await Promise.all(Array.from({ length: 60 }, churn));
 }
 
-/** A snooker break from the D of up to `max` shots: a first red by a fan of headings, then the bot. */
-function snookerBreak(max: number): PracticeShot[] {
-  const P = 'bench';
-  let game: Game = practiceStart('snooker', P, 0);
-  const shots: PracticeShot[] = [];
-  for (let i = 0; i < 360 && shots.length === 0; i++) {
-    const shot = { ball: 'cue', heading: (i * Math.PI) / 180, speed: 5, side: 0, top: 0 };
-    try {
-      const next = playShot(game, { ...shot, player: P }).game;
-      if (!next.verdict!.foul && next.verdict!.potted.length > 0) {
-        shots.push({ shot });
-        game = next;
-      }
-    } catch {
-      // the next heading
-    }
-  }
-  while (shots.length > 0 && shots.length < max && game.winner === null && game.turn === P) {
-    const { player: _p, ...shot } = chooseShot(game, 'sound', (scene, s) => simulate(scene, s));
-    shots.push({ shot });
-    game = playShot(game, { ...shot, player: P }).game;
-  }
-  return shots;
-}
 
 async function practice(until: number): Promise<void> {
   const http = url.replace(/^ws/, 'http').replace(/\/ws$/, '');
-  const shots = snookerBreak(30);
+  const shots = snookerBreak('bench', 30);
   const counts: Record<string, number> = {};
   const post = async (path: string, body: unknown) => {
     const res = await fetch(`${http}${path}`, { method: 'POST', headers: { 'content-type': 'application/json' }, body: JSON.stringify(body) });

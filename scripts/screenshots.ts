@@ -10,10 +10,9 @@ import { openDatabase } from '../server/database.ts';
 import { Store } from '../server/store.ts';
 import { hashToken } from '../server/tokens.ts';
 import { buildClient } from './build-client.ts';
-import { RAIL } from '../client/table/draw.ts';
-import { tableSpec } from '../shared/physics/index.ts';
 import { newGame } from '../shared/rules/index.ts';
 import { pottingBreak } from '../tests/support/potting-break.ts';
+import { tableOnScreen } from '../tests/support/table-screen.ts';
 import { ROOT, startServerProcess, tempDir } from '../tests/support/server-process.ts';
 
 const OUT = resolve(ROOT, 'docs/screenshots');
@@ -89,11 +88,8 @@ try {
   // The break from the kitchen: the ball in hand with its legal area drawn.
   await page.screenshot({ path: join(OUT, 'ball-in-hand.png') });
   // The stroke being drawn back: pressed on the cue ball and pulled straight back, not let go.
-  const canvas = (await page.locator('canvas.table').boundingBox())!;
   const g = newGame('nineball', ['a', 'b'], { seed: 1 });
-  const cue = g.balls.find((b) => b.id === 'cue')!;
-  const k = canvas.width / (tableSpec(g.table).length + 2 * RAIL);
-  const at = { x: canvas.x + canvas.width / 2 + cue.x * k, y: canvas.y + canvas.height / 2 - cue.y * k };
+  const at = (await tableOnScreen(page, g.table)).at(g.balls.find((b) => b.id === 'cue')!);
   await page.mouse.move(at.x, at.y);
   await page.mouse.down();
   for (let i = 1; i <= 8; i++) await page.mouse.move(at.x - 12 * i, at.y);

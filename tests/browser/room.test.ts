@@ -6,12 +6,11 @@
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { ProtocolClient } from '../../bots/client.ts';
-import { tableSpec } from '../../shared/physics/index.ts';
 import type { ServerMessage } from '../../shared/protocol/index.ts';
 import { cueBallId, newGame } from '../../shared/rules/index.ts';
 import { fullPull, pullToSpeed } from '../../client/table/cue.ts';
-import { RAIL } from '../../client/table/draw.ts';
 import { chromiumAvailable, serverAndChromium } from '../support/browser.ts';
+import { tableOnScreen } from '../support/table-screen.ts';
 
 describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
   const env = serverAndChromium();
@@ -211,10 +210,7 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
     await page.goto(`${env.server.url}/practice`);
     await page.getByLabel('Place balls').check();
     const g = newGame('practice', ['me'], { layout: 'nineball' });
-    const spec = tableSpec(g.table);
-    const box = (await page.locator('canvas.table').boundingBox())!;
-    const scale = box.width / (spec.length + 2 * 0.09); // the rail's width in client/table/draw.ts
-    const toScreen = (p: { x: number; y: number }) => ({ x: box.x + box.width / 2 + p.x * scale, y: box.y + box.height / 2 - p.y * scale });
+    const { at: toScreen } = await tableOnScreen(page, g.table);
     /** The canvas's colour under a point of the page. */
     const pixel = (p: { x: number; y: number }) => page.evaluate(({ x, y }) => {
       const c = document.querySelector('canvas.table') as HTMLCanvasElement;
@@ -256,9 +252,8 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
     // The break: the cue ball in hand in the kitchen, aimed up the table (heading 0) at the rack.
     const g = newGame('nineball', ['x', 'y']);
     const cue = g.balls.find((x) => x.id === cueBallId(g))!;
-    const box = (await a.locator('canvas.table').boundingBox())!;
-    const scale = box.width / (tableSpec(g.table).length + 2 * RAIL);
-    const from = { x: box.x + box.width / 2 + cue.x * scale, y: box.y + box.height / 2 - cue.y * scale };
+    const { scale, at } = await tableOnScreen(a, g.table);
+    const from = at(cue);
     const aimShown = a.getByLabel('Aim', { exact: true });
     const aimed = await aimShown.textContent();
     // Pulled back less than the cancel distance and let go: nothing is played, the aim holds.
@@ -310,13 +305,11 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
     const page = await player();
     await page.goto(`${env.server.url}/practice`);
     const g = newGame('practice', ['me'], { layout: 'nineball' });
-    const box = (await page.locator('canvas.table').boundingBox())!;
-    const scale = box.width / (tableSpec(g.table).length + 2 * RAIL);
-    const cue = g.balls.find((x) => x.id === 'cue')!;
-    const from = { x: box.x + box.width / 2 + cue.x * scale, y: box.y + box.height / 2 - cue.y * scale };
+    const { scale, at } = await tableOnScreen(page, g.table);
+    const from = at(g.balls.find((x) => x.id === 'cue')!);
     // Aim at the rack and hold it with a click; then the pointer goes to the cue ball.
     const rack = g.balls.find((x) => x.id === '1')!;
-    await page.mouse.click(box.x + box.width / 2 + rack.x * scale, box.y + box.height / 2 - rack.y * scale);
+    await page.mouse.click(at(rack).x, at(rack).y);
     const aimShown = page.getByLabel('Aim', { exact: true });
     const aimed = await aimShown.textContent();
     const power = page.getByLabel('Power', { exact: true });
@@ -346,10 +339,8 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
     const page = await ctx.newPage();
     await page.goto(`${env.server.url}/practice`);
     const g = newGame('practice', ['me'], { layout: 'nineball' });
-    const box = (await page.locator('canvas.table').boundingBox())!;
-    const scale = box.width / (tableSpec(g.table).length + 2 * RAIL);
-    const cue = g.balls.find((x) => x.id === 'cue')!;
-    const from = { x: box.x + box.width / 2 + cue.x * scale, y: box.y + box.height / 2 - cue.y * scale };
+    const { scale, at } = await tableOnScreen(page, g.table);
+    const from = at(g.balls.find((x) => x.id === 'cue')!);
     const cdp = await ctx.newCDPSession(page);
     const touch = (type: 'touchStart' | 'touchMove' | 'touchEnd', x = 0, y = 0) =>
       cdp.send('Input.dispatchTouchEvent', { type, touchPoints: type === 'touchEnd' ? [] : [{ x, y }] });
