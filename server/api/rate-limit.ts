@@ -3,6 +3,8 @@
 // pile up a minute of work at once. The buckets kept are bounded: the one used least recently goes
 // first, and a bucket left idle long enough to refill is no different from a new one.
 
+import { TokenBucket } from '../token-bucket.ts';
+
 /** Practice requests a minute when not configured: a player's, and an address's (several players). */
 export const PRACTICE_LIMITS = { perPlayer: 30, perAddress: 300 } as const;
 
@@ -14,13 +16,8 @@ export interface PracticeLimits {
 /** The fewest requests a bucket holds: a player's few quick runs in a row always pass. */
 export const MIN_BURST = 5;
 
-interface Bucket {
-  tokens: number;
-  at: number;
-}
-
 export class RateLimiter {
-  private readonly buckets = new Map<string, Bucket>();
+  private readonly buckets = new Map<string, TokenBucket>();
   /** Requests a full bucket holds. */
   readonly burst: number;
 
@@ -35,17 +32,12 @@ export class RateLimiter {
 
   /** Takes one request from `key`'s bucket at `now` (ms): 0 when allowed, else the whole seconds to wait. */
   take(key: string, now: number): number {
-    const b = this.buckets.get(key);
-    const tokens = b ? Math.min(this.burst, b.tokens + (Math.max(0, now - b.at) * this.perMinute) / 60_000) : this.burst;
+    const bucket = this.buckets.get(key) ?? new TokenBucket(this.perMinute / 60, this.burst, now);
     // Moved to the end of the map's order: the first key is the least recently used.
     this.buckets.delete(key);
-    if (tokens < 1) {
-      this.buckets.set(key, { tokens, at: now });
-      return Math.max(1, Math.ceil(((1 - tokens) * 60) / this.perMinute));
-    }
-    this.buckets.set(key, { tokens: tokens - 1, at: now });
+    this.buckets.set(key, bucket);
     if (this.buckets.size > this.maxKeys) this.buckets.delete(this.buckets.keys().next().value!);
-    return 0;
+    return bucket.take(now) ? 0 : Math.max(1, Math.ceil(bucket.waitMs(now) / 1000));
   }
 
   /** Buckets held (for tests of the bound). */

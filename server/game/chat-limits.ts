@@ -1,7 +1,7 @@
 // Chat limits: per player across all their tabs, and per room, so that neither many tabs nor many
 // players can flood a room's spectators. A line is let through only when both have room for it.
 import { CHAT_PER_PLAYER, CHAT_PER_ROOM, CHAT_WINDOW_S } from '../../shared/protocol/index.ts';
-import { TokenBucket } from '../ws/token-bucket.ts';
+import { TokenBucket } from '../token-bucket.ts';
 import { ServiceError } from './errors.ts';
 
 export class ChatLimits {

@@ -8,7 +8,7 @@ import { CLOSE_POLICY, parseClientMessage, RATE_BURST, RATE_PER_SECOND } from '.
 import type { ConnId, Delivery, GameService } from '../game/service.ts';
 import type { AddressCap } from './address.ts';
 import { StallWatch } from './stall-watch.ts';
-import { TokenBucket } from './token-bucket.ts';
+import { TokenBucket } from '../token-bucket.ts';
 
 export interface BindingOptions {
   /** Interval between pings (ms); a socket that has not answered the last two is dropped. */

@@ -1,7 +1,7 @@
 // The per-socket rate limit: bursts up to the bucket, then the rate.
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { TokenBucket } from '../../../server/ws/token-bucket.ts';
+import { TokenBucket } from '../../../server/token-bucket.ts';
 
 describe('the token bucket', () => {
   it('takes a burst at once, then refills at the rate', () => {

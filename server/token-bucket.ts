@@ -1,4 +1,5 @@
-// A token bucket: `rate` tokens a second up to `burst`; each message takes one.
+// A token bucket: `rate` tokens a second up to `burst`; each message, guest or request takes one.
+// Shared by every rate limit: socket frames, chat, new guests per address, the HTTP API.
 export class TokenBucket {
   private tokens: number;
   private last: number;
