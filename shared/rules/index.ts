@@ -62,6 +62,7 @@ export { ballValue } from './snooker.ts';
 export { groupOf } from './eightball.ts';
 export { countCarom } from './threecushion.ts';
 export { readOutcome } from './outcome.ts';
+export { seedState, nextUint32 } from './rng.ts';
 export { ballSet } from './practice.ts';
 export { playShot, shotClockExpired } from './play.ts';
 export type { PlayedShot } from './play.ts';
