@@ -364,7 +364,8 @@ export function drawBall(ctx: CanvasRenderingContext2D, b: DrawnBall, R: number,
     ctx.clip();
     if (look.stripe) {
       ctx.fillStyle = IVORY;
-      const axis = rotate(q, [0, 1, 0]);
+      // The number stands along the stripe's axis, as on a real ball: turned with it.
+      const axis = rotate(q, turned ? [1, 0, 0] : [0, 1, 0]);
       fillCap(ctx, capView(axis, STRIPE_HALF));
       fillCap(ctx, capView([-axis[0], -axis[1], -axis[2]], STRIPE_HALF));
     }

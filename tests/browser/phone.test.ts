@@ -126,6 +126,20 @@ describe.skipIf(!chromiumAvailable())('a room on a phone in Chromium', () => {
     console.log(`phone upright: the 1's ink ${ink.wide.toFixed(2)} wide, ${ink.tall.toFixed(2)} tall (device px, standard deviations)`);
     expect(ink.w).toBeGreaterThan(0);
     expect(ink.tall).toBeGreaterThan(1.5 * ink.wide);
+    // The 9 (in the middle of the diamond, 2√3 R beyond the 1) has its stripe across the screen,
+    // as on a real ball whose number stands upright: ivory above and below its number, yellow beside.
+    const blue = await canvas.evaluate((el, p) => {
+      const c = el as HTMLCanvasElement;
+      const k = c.width / c.getBoundingClientRect().width;
+      const scale = ((c.height / k) / p.long) * k;
+      const cx = c.width / 2;
+      const cy = c.height / 2 - p.x * scale;
+      const d = 0.75 * p.R * scale;
+      const at = (x: number, y: number) => c.getContext('2d')!.getImageData(Math.round(x), Math.round(y), 1, 1).data[2]!;
+      return { above: at(cx, cy - d), below: at(cx, cy + d), left: at(cx - d, cy), right: at(cx + d, cy) };
+    }, { x: poolMarks(spec).footSpot.x + 2 * Math.sqrt(3) * spec.ballRadius, R: spec.ballRadius, long: spec.length + 2 * RAIL });
+    console.log(`phone upright: the 9's blue channel above ${blue.above}, below ${blue.below}, left ${blue.left}, right ${blue.right}`);
+    expect(Math.min(blue.above, blue.below)).toBeGreaterThan(Math.max(blue.left, blue.right) + 60);
     // Up the screen is +x (the table's length), right is -y: 5 cm up and 2 cm right.
     const watcher = await ProtocolClient.connect(`${env.server.url.replace('http', 'ws')}/ws`);
     await watcher.request({ type: 'hello', name: 'Watch-phone' });
