@@ -5,6 +5,7 @@ import { replayMatch, playShot, type Game, type MatchAction, type MatchRecord } 
 import { h, KIND_NAMES } from '../dom.ts';
 import { api, ApiRefusal } from '../net/api.ts';
 import { Animator } from '../table/animator.ts';
+import { Tray } from '../table/tray.ts';
 import { TableView } from '../table/view.ts';
 import { verdictSentence } from '../verdict.ts';
 import { count } from '../words.ts';
@@ -39,10 +40,12 @@ export function mountMatch(root: HTMLElement, _ctx: unknown, id: string): () => 
       const speed = h('select', { 'aria-label': 'Speed' }, ...['0.5', '1', '2', '4'].map((v) => h('option', { value: v, selected: v === '1' }, `${v}×`)));
       const play = h('button', { type: 'button' }, 'Play');
       const list = h('ol', { className: 'shots', 'aria-label': 'Shots' });
+      const tray = new Tray();
       section.replaceChildren(
         h('h2', {}, `${KIND_NAMES[m.kind] ?? m.kind}: ${m.players.map((p) => p.name).join(' v ')}`),
         h('p', {}, m.result ? `${names(m.result.winner)} won (${m.result.reason}).` : 'In play.', ` ${count(replayed.shots.length, 'shot')}; ${bad === 0 ? 'every hash matches the server\'s' : bad === 1 ? '1 hash differs from the server\'s' : `${bad} hashes differ from the server's`}.`),
         tableBox,
+        tray.element,
         h('p', {}, play, ' ', h('label', {}, 'Speed ', speed)),
         info,
         list,
@@ -51,19 +54,36 @@ export function mountMatch(root: HTMLElement, _ctx: unknown, id: string): () => 
       animator = new Animator(view);
       const before: Game[] = [m.start, ...replayed.games];
       view.draw(m.start.balls);
+      tray.update(m.start);
       let current = 0;
       let playing = false;
       const shotIndexes = m.actions.map((a, i) => (a.type === 'shot' ? i : -1)).filter((i) => i >= 0);
       const links: HTMLAnchorElement[] = [];
+      // Each shot played once, kept: the tray's order at shot k is every pot of the shots before it,
+      // so a jump to a shot shows the tray of the game there, in the order the balls went down.
+      const playedShots: ReturnType<typeof playShot>[] = [];
+      const playedAt = (k: number) => {
+        const i = shotIndexes[k]!;
+        const a = m.actions[i] as Extract<MatchAction, { type: 'shot' }>;
+        return (playedShots[k] ??= playShot(before[i]!, { ...a.shot, player: a.player } as never, a.cueBall));
+      };
+      const potsBefore = (k: number) =>
+        Array.from({ length: k }, (_, j) => playedAt(j).outcome.events.filter((e) => e.kind === 'pocket').map((e) => e.balls[0]!)).flat();
+      /** The shot shown last: a shot's tray is set after its drops only if no other was picked meanwhile. */
+      let showing = 0;
       const show = async (k: number) => {
+        const token = ++showing;
         links.forEach((a, j) => (j === k ? a.setAttribute('aria-current', 'step') : a.removeAttribute('aria-current')));
         const i = shotIndexes[k]!;
         const a = m.actions[i] as Extract<MatchAction, { type: 'shot' }>;
-        const played = playShot(before[i]!, { ...a.shot, player: a.player } as never, a.cueBall);
+        const played = playedAt(k);
+        tray.update(before[i]!, potsBefore(k));
         view!.canvas.dataset.outcomeHash = played.outcome.hash;
         const v = played.game.verdict;
         info.textContent = `Shot ${k + 1}: ${v ? verdictSentence(played.game, v, names, { shot: a.shot as { pushOut?: boolean; calledPocket?: string }, before: before[i]! }) : ''}`;
         await animator!.play(played.outcome, Number(speed.value));
+        // The balls have dropped: they show in the tray (the game after this shot).
+        if (token === showing) tray.update(played.game, potsBefore(k + 1));
       };
       const run = async () => {
         playing = true;

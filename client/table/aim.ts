@@ -215,8 +215,9 @@ export class Aim {
       // Alt + arrows move a ball in hand, 1 cm a press (1 mm with Shift), to legal places only.
       e.preventDefault();
       const cue = this.cuePosition();
-      const [dx, dy] = move[e.key]!;
-      if (cue) this.placeAt({ x: cue.x + dx * 0.01 * fine, y: cue.y + dy * 0.01 * fine });
+      const [right, up] = move[e.key]!;
+      const d = this.view.screenStep(right * 0.01 * fine, up * 0.01 * fine);
+      if (cue) this.placeAt({ x: cue.x + d.x, y: cue.y + d.y });
       return;
     }
     if (e.key === 'ArrowLeft') this.state.heading += 0.008 * fine;

@@ -323,6 +323,12 @@ const NUMBER_FACES: readonly (readonly [Vec3, Vec3, Vec3])[] = [
   [[0, 0, 1], [1, 0, 0], [0, 1, 0]],
   [[0, 0, -1], [1, 0, 0], [0, -1, 0]],
 ];
+/** The same discs with the number a quarter turn clockwise, for a table drawn turned (view.ts):
+ * on a ball at rest the number then reads upright on the screen, not along the table. */
+const NUMBER_FACES_TURNED: readonly (readonly [Vec3, Vec3, Vec3])[] = [
+  [[0, 0, 1], [0, -1, 0], [1, 0, 0]],
+  [[0, 0, -1], [0, 1, 0], [1, 0, 0]],
+];
 const SPOT = 0.2;
 /** A mark centred on c, with some tangent frame (a spot is round: any will do). */
 function frameAt(c: Vec3): readonly [Vec3, Vec3, Vec3] {
@@ -339,7 +345,8 @@ function frameAt(c: Vec3): readonly [Vec3, Vec3, Vec3] {
 const S = Math.SQRT1_2;
 const SPOTS = ([[S, 0, S], [-S, 0, -S], [0, 1, 0], [0, -1, 0], [-S, 0, S], [S, 0, -S]] as const).map((c) => frameAt(c));
 
-export function drawBall(ctx: CanvasRenderingContext2D, b: DrawnBall, R: number, table?: string): void {
+/** `turned`: the table is drawn turned a quarter (+x up the screen), so the numbers are turned back. */
+export function drawBall(ctx: CanvasRenderingContext2D, b: DrawnBall, R: number, table?: string, turned = false): void {
   const look = ballLook(b.id, table);
   const q = b.q ?? IDENTITY;
   const sink = b.sink ?? 0;
@@ -357,11 +364,12 @@ export function drawBall(ctx: CanvasRenderingContext2D, b: DrawnBall, R: number,
     ctx.clip();
     if (look.stripe) {
       ctx.fillStyle = IVORY;
-      const axis = rotate(q, [0, 1, 0]);
+      // The number stands along the stripe's axis, as on a real ball: turned with it.
+      const axis = rotate(q, turned ? [1, 0, 0] : [0, 1, 0]);
       fillCap(ctx, capView(axis, STRIPE_HALF));
       fillCap(ctx, capView([-axis[0], -axis[1], -axis[2]], STRIPE_HALF));
     }
-    if (look.number !== null) for (const f of NUMBER_FACES) drawNumber(ctx, q, f, look.number);
+    if (look.number !== null) for (const f of turned ? NUMBER_FACES_TURNED : NUMBER_FACES) drawNumber(ctx, q, f, look.number);
     if (look.spots !== null) {
       ctx.fillStyle = look.spots;
       for (const f of SPOTS) {

@@ -101,9 +101,9 @@ export class TableView {
     if (!bg) drawTable(ctx, this.spec);
     const R = this.spec.ballRadius;
     // Dropping balls first: they are below the cloth's level, under any ball still rolling.
-    for (const b of balls) if (b.sink) drawBall(ctx, b.q ? b : { ...b, q: this.orientations.get(b.id) }, R, this.spec.name);
+    for (const b of balls) if (b.sink) drawBall(ctx, b.q ? b : { ...b, q: this.orientations.get(b.id) }, R, this.spec.name, this.turned);
     for (const b of balls) drawShadow(ctx, b, R);
-    for (const b of balls) if (!b.sink) drawBall(ctx, b.q ? b : { ...b, q: this.orientations.get(b.id) }, R, this.spec.name);
+    for (const b of balls) if (!b.sink) drawBall(ctx, b.q ? b : { ...b, q: this.orientations.get(b.id) }, R, this.spec.name, this.turned);
     this.overlay?.(ctx, this);
   }
 
@@ -126,6 +126,11 @@ export class TableView {
     drawTable(c, this.spec);
     this.background = bg;
     return bg;
+  }
+
+  /** A step on the screen (right, up) as a step on the table: an arrow key moves a ball the way it points. */
+  screenStep(right: number, up: number): { x: number; y: number } {
+    return this.turned ? { x: up, y: -right } : { x: right, y: up };
   }
 
   /** The world point under a pointer event's client coordinates. */

@@ -1,8 +1,15 @@
 // Defect 7 of issue 37: a room on a phone. Held sideways (844x390 CSS px) the table takes at least
 // 70% of the width and "Shoot" is on screen; held upright (390x844) the balls are drawn big enough
-// for their numbers to be read (the canvas says its ball radius in CSS px: data-ball-radius).
+// for their numbers to be read (the canvas says its ball radius in CSS px: data-ball-radius), the
+// numbers read upright on the screen though the table is turned, and Alt + an arrow moves a ball
+// in hand the way the arrow points on the screen.
 import type { Browser, Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
+import { ProtocolClient } from '../../bots/client.ts';
+import { RAIL } from '../../client/table/draw.ts';
+import { tableSpec } from '../../shared/physics/index.ts';
+import type { ServerMessage } from '../../shared/protocol/index.ts';
+import { poolMarks } from '../../shared/rules/index.ts';
 import { chromiumAvailable, serverAndChromium } from '../support/browser.ts';
 
 /** Smallest ball radius (CSS px) at which a ball's number can be read. */
@@ -78,6 +85,79 @@ describe.skipIf(!chromiumAvailable())('a room on a phone in Chromium', () => {
     const right = await aimAt(0.9, 0.75);
     expect(right).toBeLessThan(-10);
     expect(right).toBeGreaterThan(-90);
+    await a.context().close();
+    await b.context().close();
+  }, 60_000);
+  it('upright (390x844): a ball\'s number reads upright on the screen, and Alt + arrows move the ball in hand as the arrows point', async () => {
+    const { a, b } = await table(390, 844);
+    const id = /\/room\/([\w-]+)$/.exec(a.url())![1]!;
+    // The 1 stands on the foot spot, at rest (not turned). On the page not on turn (no cue
+    // drawn over it), the dark ink of its number within half a ball radius of its centre: a "1"
+    // read upright is taller than wide on the screen.
+    const spec = tableSpec('pool-9ft');
+    const canvas = b.locator('canvas.table');
+    await canvas.scrollIntoViewIfNeeded();
+    const ink = await canvas.evaluate((el, p) => {
+      const c = el as HTMLCanvasElement;
+      const k = c.width / c.getBoundingClientRect().width;
+      const scale = (c.height / k) / p.long; // CSS px a metre, the table's length down the screen
+      const cx = c.width / 2;
+      const cy = c.height / 2 - p.x * scale * k;
+      const r = 0.45 * p.R * scale * k;
+      const x0 = Math.floor(cx - r);
+      const y0 = Math.floor(cy - r);
+      const n = Math.ceil(2 * r);
+      const data = c.getContext('2d')!.getImageData(x0, y0, n, n).data;
+      let w = 0, mx = 0, my = 0, sxx = 0, syy = 0;
+      for (let j = 0; j < n; j++) {
+        for (let i = 0; i < n; i++) {
+          const dx = x0 + i + 0.5 - cx;
+          const dy = y0 + j + 0.5 - cy;
+          if (dx * dx + dy * dy > r * r) continue;
+          const o = 4 * (j * n + i);
+          const lum = 0.299 * data[o]! + 0.587 * data[o + 1]! + 0.114 * data[o + 2]!;
+          const d = Math.max(0, 140 - lum);
+          w += d; mx += d * dx; my += d * dy; sxx += d * dx * dx; syy += d * dy * dy;
+        }
+      }
+      mx /= w; my /= w;
+      return { w, wide: Math.sqrt(sxx / w - mx * mx), tall: Math.sqrt(syy / w - my * my) };
+    }, { x: poolMarks(spec).footSpot.x, R: spec.ballRadius, long: spec.length + 2 * RAIL });
+    console.log(`phone upright: the 1's ink ${ink.wide.toFixed(2)} wide, ${ink.tall.toFixed(2)} tall (device px, standard deviations)`);
+    expect(ink.w).toBeGreaterThan(0);
+    expect(ink.tall).toBeGreaterThan(1.5 * ink.wide);
+    // The 9 (in the middle of the diamond, 2√3 R beyond the 1) has its stripe across the screen,
+    // as on a real ball whose number stands upright: ivory above and below its number, yellow beside.
+    const blue = await canvas.evaluate((el, p) => {
+      const c = el as HTMLCanvasElement;
+      const k = c.width / c.getBoundingClientRect().width;
+      const scale = ((c.height / k) / p.long) * k;
+      const cx = c.width / 2;
+      const cy = c.height / 2 - p.x * scale;
+      const d = 0.75 * p.R * scale;
+      const at = (x: number, y: number) => c.getContext('2d')!.getImageData(Math.round(x), Math.round(y), 1, 1).data[2]!;
+      return { above: at(cx, cy - d), below: at(cx, cy + d), left: at(cx - d, cy), right: at(cx + d, cy) };
+    }, { x: poolMarks(spec).footSpot.x + 2 * Math.sqrt(3) * spec.ballRadius, R: spec.ballRadius, long: spec.length + 2 * RAIL });
+    console.log(`phone upright: the 9's blue channel above ${blue.above}, below ${blue.below}, left ${blue.left}, right ${blue.right}`);
+    expect(Math.min(blue.above, blue.below)).toBeGreaterThan(Math.max(blue.left, blue.right) + 60);
+    // Up the screen is +x (the table's length), right is -y: 5 cm up and 2 cm right.
+    const watcher = await ProtocolClient.connect(`${env.server.url.replace('http', 'ws')}/ws`);
+    await watcher.request({ type: 'hello', name: 'Watch-phone' });
+    const shots: Extract<ServerMessage, { type: 'shot' }>[] = [];
+    watcher.onMessage((m) => m.type === 'shot' && shots.push(m));
+    const seen = await watcher.request({ type: 'watch', room: id });
+    if (seen.type !== 'room') throw new Error(JSON.stringify(seen));
+    const cue = seen.room.game!.balls.find((x) => x.id === 'cue')!;
+    const canvasA = a.locator('canvas.table');
+    await canvasA.focus();
+    for (let i = 0; i < 5; i++) await canvasA.press('Alt+ArrowUp');
+    for (let i = 0; i < 2; i++) await canvasA.press('Alt+ArrowRight');
+    await a.getByRole('button', { name: 'Shoot' }).tap();
+    await expect.poll(() => shots.length, { timeout: 10_000 }).toBe(1);
+    const placed = shots[0]!.cueBall!;
+    expect(placed.x).toBeCloseTo(cue.x + 0.05, 6);
+    expect(placed.y).toBeCloseTo(cue.y - 0.02, 6);
+    await watcher.close();
     await a.context().close();
     await b.context().close();
   }, 60_000);
