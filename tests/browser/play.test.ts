@@ -2,8 +2,6 @@
 // break, a foul, ball in hand dragged, a concession) while Firefox watches, every page's hash
 // equal to the server's; the page reconnects after the server restarts; practice plays offline;
 // no page logs an error.
-import { createServer, type Server } from 'node:http';
-import type { AddressInfo } from 'node:net';
 import { join } from 'node:path';
 import type { Browser, BrowserContext, Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
@@ -14,34 +12,9 @@ import { tableSpec } from '../../shared/physics/index.ts';
 import { chromiumAvailable, launchChromium } from '../support/browser.ts';
 import { firefoxAvailable, launchFirefox } from '../support/firefox.ts';
 import { startServerProcess, tempDir, type ServerProcess } from '../support/server-process.ts';
+import { reportCollector } from '../support/report-collector.ts';
 
 const RAIL = 0.09; // client/table/draw.ts
-
-interface Reported {
-  stateId: number;
-  hash: string;
-  server: string;
-  userAgent: string;
-}
-
-/** A local server that collects what a page posts to it (Firefox's hashes). */
-async function collector(): Promise<{ url: string; got: Reported[]; close(): Promise<void> }> {
-  const got: Reported[] = [];
-  const server: Server = createServer((req, res) => {
-    let body = '';
-    req.on('data', (d: Buffer) => (body += d.toString()));
-    req.on('end', () => {
-      res.writeHead(204, { 'access-control-allow-origin': '*' }).end();
-      if (req.method === 'POST') got.push(JSON.parse(body) as Reported);
-    });
-  });
-  await new Promise<void>((r) => server.listen(0, '127.0.0.1', r));
-  return {
-    url: `http://127.0.0.1:${(server.address() as AddressInfo).port}/report`,
-    got,
-    close: () => new Promise((r) => server.close(() => r())),
-  };
-}
 
 function watchErrors(page: Page, errors: string[], label: string): void {
   page.on('pageerror', (e) => errors.push(`${label}: ${e.message}`));
@@ -92,7 +65,7 @@ describe.skipIf(!chromiumAvailable())('the browser client', () => {
       return m.type === 'room' ? { stateId: m.room.stateId, game: m.room.game! } : m.type === 'shot' ? { stateId: m.stateId, game: m.game } : null!;
     };
 
-    const reports = await collector();
+    const reports = await reportCollector();
     const firefox = firefoxAvailable() ? launchFirefox(`${server.url}/room/${roomId}?report=${encodeURIComponent(reports.url)}`) : undefined;
     try {
       await b.goto(`${server.url}/room/${roomId}`);
