@@ -56,7 +56,10 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
   level.value = '3';
   const versusButton = h('button', { type: 'button', onclick: () => ((mode.value = 'computer'), reset()) }, 'Play the computer');
   // The computer's worker script is fetched now, so that it can be played with the network off.
-  void preloadComputer().catch(() => undefined);
+  void preloadComputer().then(
+    () => (versusButton.dataset.ready = 'true'),
+    () => undefined,
+  );
   const mind = new ComputerMind();
   const layout = h('select', { 'aria-label': 'Layout' }, ...['nineball', 'eightball', 'snooker', 'threecushion', 'empty'].map((l) => h('option', { value: l }, KIND_NAMES[l] ?? 'Empty table')));
   const runKind = h('select', { 'aria-label': 'Run' }, ...(['snooker', 'nineball', 'threecushion'] as const).map((k) => h('option', { value: k }, KIND_NAMES[k])));
