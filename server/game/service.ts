@@ -217,7 +217,9 @@ export class GameService {
     if (s.status === 'waiting' && s.seats.every((p) => this.awayPastHold(p.id, now))) return this.settle(room, { ...s, status: 'closed' });
     if (s.status !== 'playing' || s.game === null) return;
     this.computerTurn(room);
-    if (s.deadline !== null && s.deadline <= now) {
+    // The computer's own turn is bounded by its think budget and pause, not by the shot clock.
+    const computersTurn = s.computer !== undefined && s.computer !== null && s.game.turn === s.computer.id && this.options.computer !== undefined;
+    if (s.deadline !== null && s.deadline <= now && !computersTurn) {
       if (s.seats.every((p) => !this.lobby.connected(p.id))) {
         // Nobody is there to play: the clock stops until a player comes back, so that no game
         // is decided by timeouts alone.
