@@ -6,6 +6,8 @@
 import {
   cueBallId,
   decide,
+  legalTargets,
+  POCKETS,
   newGame,
   placeBall,
   playShot,
@@ -29,7 +31,7 @@ import { Pace } from '../table/pace.ts';
 import { SoundPlayer, soundToggle } from '../table/sound.ts';
 import { Tray } from '../table/tray.ts';
 import { TableView } from '../table/view.ts';
-import { verdictSentence } from '../verdict.ts';
+import { POCKET_NAMES, verdictSentence } from '../verdict.ts';
 import { ComputerMind, preloadComputer } from '../computer/mind.ts';
 import type { Decision, Level } from '../../shared/ai/index.ts';
 
@@ -54,6 +56,10 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
   const versusKind = h('select', { 'aria-label': 'Game' }, ...VERSUS_KINDS.map((k) => h('option', { value: k }, KIND_NAMES[k])));
   const level = h('select', { 'aria-label': 'Level' }, ...[1, 2, 3, 4, 5].map((n) => h('option', { value: String(n) }, `Level ${n}`)));
   level.value = '3';
+  // Against the computer at eight-ball: the pocket called for the 8, as in a room.
+  const called = h('select', { 'aria-label': 'Called pocket' }, h('option', { value: '' }, 'choose a pocket'), ...POCKETS.map((p) => h('option', { value: p }, POCKET_NAMES[p] ?? p)));
+  const calling = h('label', { hidden: true }, 'Called pocket for the 8 ', called);
+  const onTheEight = () => versus !== null && game.kind === 'eightball' && game.groups !== null && game.turn === ME && legalTargets(game).includes('8');
   const versusButton = h('button', { type: 'button', onclick: () => ((mode.value = 'computer'), reset()) }, 'Play the computer');
   // The computer's worker script is fetched now, so that it can be played with the network off.
   void preloadComputer().then(
@@ -77,7 +83,7 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
       { className: 'practice', 'aria-label': 'Practice' },
       h('h2', {}, 'Practice'),
       h('p', {}, mode, ' ', layout, ' ', runKind, ' ', start, ' ', h('label', {}, placing, ' Place balls')),
-      h('p', {}, versusKind, ' ', h('label', {}, 'Level ', level), ' ', versusButton),
+      h('p', {}, versusKind, ' ', h('label', {}, 'Level ', level), ' ', versusButton, ' ', calling),
       tableBox,
       tray.element,
       h('p', {}, undoButton, ' ', replayButton, ' ', submit),
@@ -137,6 +143,7 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
     runKind.hidden = mode.value !== 'run';
     submit.hidden = mode.value !== 'run';
     undoButton.hidden = mode.value !== 'free';
+    calling.hidden = !onTheEight();
     submit.disabled = !run || !run.issued || run.submitted || run.shots.length === 0;
   };
 
@@ -185,7 +192,8 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
   function shoot(): void {
     if (busy || waiting || run?.submitted || (placing.checked && !versus) || game.winner !== null || game.turn !== ME || !aim) return;
     const s = aim.state;
-    const shot = { ball: cueBallId(game), heading: s.heading, speed: s.speed, side: s.side, top: s.top };
+    const shot: PracticeShot['shot'] & { calledPocket?: (typeof POCKETS)[number] } = { ball: cueBallId(game), heading: s.heading, speed: s.speed, side: s.side, top: s.top };
+    if (onTheEight() && called.value) shot.calledPocket = called.value as (typeof POCKETS)[number];
     let played;
     try {
       played = playShot(game, { ...shot, player: ME }, s.cueBall);
