@@ -45,6 +45,8 @@ interface Slot {
   timer?: NodeJS.Timeout;
 }
 
+/** The wait before a crashed worker is replaced (ms). */
+const RESPAWN_MS = 1000;
 const WORKER_SOURCE = fileURLToPath(new URL('./worker.ts', import.meta.url));
 
 /** Bundles the worker into a temporary .mjs, removed when the process exits. */
@@ -127,7 +129,7 @@ export class ComputerPool implements Thinker {
   }
 
   /** Gives up the slot's task and puts a fresh worker in its place. */
-  private replace(slot: Slot, why: string): void {
+  private replace(slot: Slot, why: string, timedOut = false): void {
     const i = this.slots.indexOf(slot);
     if (i < 0) return;
     clearTimeout(slot.timer);
@@ -137,7 +139,15 @@ export class ComputerPool implements Thinker {
     void slot.worker.terminate();
     this.log(`computer: a worker ${why}`);
     p?.reject(new Error(`the worker ${why}`));
-    if (!this.closed) this.slots.push(this.spawn());
+    // A worker given up for its budget is replaced at once; one that crashed a second later, so
+    // that a worker failing as it starts cannot spin.
+    const respawn = () => {
+      if (this.closed) return;
+      this.slots.push(this.spawn());
+      this.pump();
+    };
+    if (timedOut) respawn();
+    else setTimeout(respawn, RESPAWN_MS).unref();
     this.pump();
   }
 
@@ -147,9 +157,16 @@ export class ComputerPool implements Thinker {
       if (slot.busy || this.queue.length === 0) continue;
       const p = this.queue.shift()!;
       slot.busy = p;
-      slot.timer = setTimeout(() => this.replace(slot, `took longer than ${this.options.budgetMs} ms`), this.options.budgetMs);
+      slot.timer = setTimeout(() => this.replace(slot, `took longer than ${this.options.budgetMs} ms`, true), this.options.budgetMs);
       slot.timer.unref();
-      slot.worker.postMessage({ id: p.id, ...p.task });
+      try {
+        slot.worker.postMessage({ id: p.id, ...p.task });
+      } catch (err) {
+        // A task that cannot be sent (not plain data) frees its worker at once.
+        clearTimeout(slot.timer);
+        slot.busy = null;
+        p.reject(err as Error);
+      }
     }
   }
 }
