@@ -94,4 +94,23 @@ describe('the computer on the server', () => {
     harness.send(1, { type: 'lobby' });
     expect(last(harness, 1, 'lobby').rooms.map((r) => r.id)).toContain(room.id);
   });
+
+  it('takes up its turn again after a restart, from the stored room', async () => {
+    const never = { think: () => new Promise<never>(() => {}), close: async () => {} };
+    const first = openHarness({ service: { computer: { thinker: never, pauseMs: 0 } } });
+    first.send(1, { type: 'hello', name: 'Again' });
+    first.send(1, { type: 'create', kind: 'threecushion', raceTo: 2, computer: 1 });
+    const room = last(first, 1, 'room').room;
+    first.send(1, { type: 'shot', room: room.id, stateId: room.stateId, shot: { ball: 'white', heading: Math.PI / 2, speed: 0.3, side: 0, top: 0 } });
+    expect(last(first, 1, 'shot').game.turn).toBe(room.players[1]!.id);
+    first.close();
+    const out: Delivery[] = [];
+    const answers = { think: async ({ game }: { game: Parameters<typeof fallbackDecision>[0] }) => fallbackDecision(game), close: async () => {} };
+    harness = openHarness({ dbPath: first.dbPath, service: { computer: { thinker: answers, pauseMs: 0 } } });
+    harness.service.attach((d) => out.push(...d));
+    harness.tick();
+    // Nobody is connected to be told: the stroke shows in the match's log.
+    const shots = () => harness!.store.matchActions(room.match!).filter((a) => (a.action as { type: string }).type === 'shot').length;
+    await expect.poll(shots, { timeout: 5000 }).toBe(2);
+  });
 });
