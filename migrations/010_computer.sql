@@ -1,7 +1,10 @@
 -- The computer opponent (issue 38): a stored player per level, so that its matches are recorded and
--- replayable like any other, marked so that the ratings skip them and the pruner keeps it.
-ALTER TABLE players ADD COLUMN computer INTEGER CHECK (computer BETWEEN 1 AND 5);
-CREATE UNIQUE INDEX players_computer ON players (computer) WHERE computer IS NOT NULL;
+-- replayable like any other, listed here so that the ratings skip its matches. The reference keeps
+-- the pruner from deleting it (a foreign key it cannot break).
+CREATE TABLE computers (
+  level     INTEGER PRIMARY KEY CHECK (level BETWEEN 1 AND 5),
+  player_id INTEGER NOT NULL UNIQUE REFERENCES players (id)
+);
 
 -- A new reason a result is not rated: a computer played. SQLite cannot alter a CHECK, so results
 -- is rebuilt under the same rows (nothing refers to it), with its indexes.

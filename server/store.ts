@@ -161,6 +161,8 @@ export class Store {
   private seedsSweptAt = -Infinity;
   /** Players on the leaderboard per kind, counted once and forgotten when a rating changes. */
   private readonly boardCount = new Map<string, number>();
+  /** The computer's players (migration 010). */
+  private readonly computer;
 
   constructor(
     private readonly db: Database,
@@ -182,7 +184,7 @@ export class Store {
       // A page of players by id, each marked idle when not seen since the cutoff and referred to by
       // no row anywhere; every subquery walks an index on the referring column.
       idlePage: db.prepare<[number, number, number], { id: number; idle: number }>(
-        `SELECT p.id, (coalesce(p.last_seen, p.created_at) < ? AND p.computer IS NULL
+        `SELECT p.id, (coalesce(p.last_seen, p.created_at) < ?
            AND NOT EXISTS (SELECT 1 FROM matches WHERE player1 = p.id)
            AND NOT EXISTS (SELECT 1 FROM matches WHERE player2 = p.id)
            AND NOT EXISTS (SELECT 1 FROM rooms WHERE created_by = p.id)
@@ -193,11 +195,6 @@ export class Store {
          FROM players p WHERE p.id > ? ORDER BY p.id LIMIT ?`,
       ),
       deletePlayer: db.prepare<[number]>('DELETE FROM players WHERE id = ?'),
-      computerPlayer: db.prepare<[number], PlayerRow>('SELECT id, name FROM players WHERE computer = ?'),
-      insertComputer: db.prepare<[string, string, string, Buffer, number, number]>(
-        'INSERT INTO players (name, name_key_lower, name_key_upper, token_hash, created_at, computer) VALUES (?, ?, ?, ?, ?, ?)',
-      ),
-      computerIn: db.prepare<[number, number], { n: number }>('SELECT count(*) AS n FROM players WHERE id IN (?, ?) AND computer IS NOT NULL'),
       insertRoom: db.prepare<[string, string, number, number, number, number, number, string, string, number]>(
         'INSERT INTO rooms (id, kind, race_to, private, shot_clock, created_by, created_at, status, state, updated_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)',
       ),
@@ -308,6 +305,15 @@ export class Store {
          ON CONFLICT (player_id, kind, what) WHERE practice_id IS NOT NULL DO NOTHING`,
       ),
     };
+    // Prepared only on a schema that has them (bench/store-fill.ts opens older ones).
+    const hasComputers = db.prepare("SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'computers'").get() !== undefined;
+    this.computer = hasComputers
+      ? {
+          byLevel: db.prepare<[number], PlayerRow>('SELECT p.id, p.name FROM computers c JOIN players p ON p.id = c.player_id WHERE c.level = ?'),
+          insert: db.prepare<[number, number]>('INSERT INTO computers (level, player_id) VALUES (?, ?)'),
+          among: db.prepare<[number, number], { n: number }>('SELECT count(*) AS n FROM computers WHERE player_id IN (?, ?)'),
+        }
+      : undefined;
     this.fillNameKeys();
   }
 
@@ -339,11 +345,15 @@ export class Store {
    * stored player so that its matches are recorded, with a token nobody holds.
    */
   computerPlayer(level: number, name: string, tokenHash: Buffer): PlayerRow {
-    const found = this.s.computerPlayer.get(level);
-    if (found) return found;
-    const keys = nameKeys(name);
-    const info = this.s.insertComputer.run(name, keys.lower, keys.upper, tokenHash, this.now(), level);
-    return { id: Number(info.lastInsertRowid), name };
+    const c = this.computer;
+    if (!c) throw new Error('the database has no computers table (migration 010)');
+    return this.db.transaction(() => {
+      const found = c.byLevel.get(level);
+      if (found) return found;
+      const row = this.createPlayer(name, tokenHash);
+      c.insert.run(level, row.id);
+      return row;
+    })();
   }
 
   /** A player's new name; throws on a name taken meanwhile (the UNIQUE constraints). */
@@ -437,7 +447,7 @@ export class Store {
   private finish(r: MatchResult, now: number): void {
     let unrated = r.rated ? null : (r.unrated ?? 'few-shots');
     // A match against the computer is never rated, whatever the service said.
-    if (this.s.computerIn.get(r.winner, r.loser)!.n > 0) unrated = 'computer';
+    if (this.computer && this.computer.among.get(r.winner, r.loser)!.n > 0) unrated = 'computer';
     if (unrated === null && this.s.pairRated.get({ a: r.winner, b: r.loser, kind: r.kind, since: now - DAY_MS })!.n >= RATED_PER_PAIR_PER_DAY) unrated = 'pair-limit';
     const inserted = this.s.insertResult.run(r.matchId, r.winner, r.loser, r.how, r.scores, unrated === null ? 1 : 0, unrated, now).changes === 1;
     if (!inserted) return;
