@@ -24,6 +24,18 @@ export async function buildClient(outDir = resolve(ROOT, 'dist/client')): Promis
       logLevel: 'warning',
     });
   }
+  // The computer's Web Worker, apart: only a page that plays the computer loads it. A classic
+  // script (iife), so that it can start from a Blob held in memory when the network is off.
+  await build({
+    entryPoints: [resolve(ROOT, 'client/computer/worker.ts')],
+    outfile: resolve(outDir, 'computer.js'),
+    bundle: true,
+    minify: true,
+    format: 'iife',
+    target: 'es2022',
+    sourcemap: true,
+    logLevel: 'warning',
+  });
   for (const name of ['index.html', 'dev.html', 'style.css']) copyFileSync(resolve(ROOT, 'client', name), resolve(outDir, name));
   return outDir;
 }

@@ -15,6 +15,8 @@ import { Store } from './store.ts';
 import { Api } from './api/routes.ts';
 import { AddressCap } from './ws/address.ts';
 import { bindWebSocket } from './ws/binding.ts';
+import { ComputerPool } from './computer/pool.ts';
+import { eventLoopStats } from './event-loop-stats.ts';
 
 export interface RunningServer {
   /** http://host:port with the port actually bound (PORT=0 picks a free one). */
@@ -43,18 +45,29 @@ export async function startServer(config: Config): Promise<RunningServer> {
   const { db, applied } = openDatabase(config.dbPath, config.migrationsDir);
   let service: GameService;
   let store: Store;
+  let computer: ComputerPool | undefined;
   try {
     // The store gives players from before migration 006 their name keys as it opens.
     store = new Store(db);
-    service = new GameService(store, { seatHoldMs: config.seatHoldMs, guestsPerAddress: config.guestsPerAddress, guestKeepMs: config.guestKeepMs, ratedMinPlayMs: config.ratedMinPlayMs, maxTabsPerPlayer: config.maxTabsPerPlayer });
+    computer = new ComputerPool({ size: config.computerWorkers, budgetMs: config.computerThinkMs });
+    service = new GameService(store, {
+      seatHoldMs: config.seatHoldMs,
+      guestsPerAddress: config.guestsPerAddress,
+      guestKeepMs: config.guestKeepMs,
+      ratedMinPlayMs: config.ratedMinPlayMs,
+      maxTabsPerPlayer: config.maxTabsPerPlayer,
+      computer: { thinker: computer, pauseMs: config.computerPauseMs },
+    });
   } catch (err) {
+    void computer?.close();
     db.close();
     throw err;
   }
   const files = loadStaticFiles(config.clientDir);
   const health = healthCheck({ version: VERSION, schema: () => schemaVersion(db), probeWrite: () => store.probeWrite(HEALTH_LOCK_WAIT_MS) });
   const api = new Api(store, { perPlayer: config.practicePerMinute, perAddress: config.practicePerAddressPerMinute });
-  const handler = createRequestHandler(files, health, api);
+  const loop = config.eventLoopStats ? eventLoopStats() : undefined;
+  const handler = createRequestHandler(files, health, api, loop);
   // Slow requests hold a socket each: headers and whole requests have deadlines (answered 408),
   // checked every second rather than Node's default 30 s.
   const http = createServer(
@@ -73,6 +86,8 @@ export async function startServer(config: Config): Promise<RunningServer> {
       });
     });
   } catch (err) {
+    void computer.close();
+    loop?.stop();
     db.close();
     throw err;
   }
@@ -99,6 +114,8 @@ export async function startServer(config: Config): Promise<RunningServer> {
     close() {
       closing ??= new Promise<void>((resolve) => {
         binding.stop();
+        loop?.stop();
+        void computer.close();
         for (const socket of wss.clients) socket.close(1001, 'server shutting down');
         wss.close();
         http.close(() => {

@@ -4,6 +4,12 @@ import { resolve } from 'node:path';
 import { PRACTICE_LIMITS } from './api/rate-limit.ts';
 import { RATED_MIN_PLAY_MS } from './ratings/policy.ts';
 import { MAX_TABS_PER_PLAYER } from '../shared/protocol/index.ts';
+import { availableParallelism } from 'node:os';
+
+/** The least pause before the computer's move that a person can follow (ms). */
+export const COMPUTER_PAUSE_MS = 800;
+/** The computer's think budget per move (ms). */
+export const COMPUTER_THINK_MS = 10_000;
 
 export const ROOT = resolve(fileURLToPath(new URL('..', import.meta.url)));
 
@@ -38,6 +44,14 @@ export interface Config {
   /** HTTP: how long a request's headers, and the whole request with its body, may take to arrive (ms). */
   readonly headersTimeoutMs: number;
   readonly requestTimeoutMs: number;
+  /** Worker threads where the computer thinks (BAIZE_COMPUTER_WORKERS; default min(2, cores)). */
+  readonly computerWorkers: number;
+  /** The least pause before the computer's move, once the balls have stopped (ms; BAIZE_COMPUTER_PAUSE_MS). */
+  readonly computerPauseMs: number;
+  /** Longest the computer may think about one move before it plays a simple stroke (ms; BAIZE_COMPUTER_THINK_MS). */
+  readonly computerThinkMs: number;
+  /** Serve GET /diagnostics/event-loop (the event loop's delay), for load tests (BAIZE_EVENT_LOOP_STATS=1). */
+  readonly eventLoopStats: boolean;
 }
 
 function seconds(env: NodeJS.ProcessEnv, name: string, fallback: number): number {
@@ -94,7 +108,20 @@ export function readConfig(env: NodeJS.ProcessEnv = process.env): Config {
     practicePerAddressPerMinute: count(env, 'BAIZE_PRACTICE_PER_ADDRESS_PER_MINUTE', PRACTICE_LIMITS.perAddress, 1_000_000, 'requests a minute'),
     ratedMinPlayMs: secondsOrZero(env, 'BAIZE_RATED_MIN_PLAY_S', RATED_MIN_PLAY_MS / 1000),
     ...limits(env),
+    computerWorkers: count(env, 'BAIZE_COMPUTER_WORKERS', Math.min(2, availableParallelism()), 256, 'worker threads'),
+    computerPauseMs: milliseconds(env, 'BAIZE_COMPUTER_PAUSE_MS', COMPUTER_PAUSE_MS, 0),
+    computerThinkMs: milliseconds(env, 'BAIZE_COMPUTER_THINK_MS', COMPUTER_THINK_MS, 1),
+    eventLoopStats: env.BAIZE_EVENT_LOOP_STATS === '1',
   };
+}
+
+/** Whole milliseconds from `min` to a minute. */
+function milliseconds(env: NodeJS.ProcessEnv, name: string, fallback: number, min: number): number {
+  const text = env[name];
+  if (text === undefined) return fallback;
+  const value = Number(text);
+  if (!/^\d+$/.test(text.trim()) || value < min || value > 60_000) throw new RangeError(`${name} must be a whole number of milliseconds from ${min} to 60000, got "${text}"`);
+  return value;
 }
 
 /** Limits on connections and requests, against clients that hold resources without using them. */

@@ -4,6 +4,7 @@ import type { IncomingMessage, ServerResponse } from 'node:http';
 import type { Api } from './api/routes.ts';
 import { pageOf } from '../shared/protocol/pages.ts';
 import type { StaticFile } from './static-files.ts';
+import type { EventLoopStats } from './event-loop-stats.ts';
 
 export interface Health {
   readonly ok: boolean;
@@ -13,7 +14,7 @@ export interface Health {
   readonly error?: string;
 }
 
-export function createRequestHandler(files: ReadonlyMap<string, StaticFile>, health: () => Health, api?: Api) {
+export function createRequestHandler(files: ReadonlyMap<string, StaticFile>, health: () => Health, api?: Api, loop?: EventLoopStats) {
   return (req: IncomingMessage, res: ServerResponse): void => {
     const path = (req.url ?? '/').split('?', 1)[0] ?? '/';
     if (api && path.startsWith('/api/')) {
@@ -22,6 +23,10 @@ export function createRequestHandler(files: ReadonlyMap<string, StaticFile>, hea
     }
     if (req.method !== 'GET' && req.method !== 'HEAD') {
       send(res, 405, 'application/json', JSON.stringify({ error: 'method not allowed' }), { allow: 'GET, HEAD' });
+      return;
+    }
+    if (loop && path === '/diagnostics/event-loop') {
+      send(res, 200, 'application/json', JSON.stringify(loop.read((req.url ?? '').includes('reset=1'))), { 'cache-control': 'no-store' });
       return;
     }
     if (path === '/healthz') {

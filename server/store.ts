@@ -161,6 +161,8 @@ export class Store {
   private seedsSweptAt = -Infinity;
   /** Players on the leaderboard per kind, counted once and forgotten when a rating changes. */
   private readonly boardCount = new Map<string, number>();
+  /** The computer's players (migration 010). */
+  private readonly computer;
 
   constructor(
     private readonly db: Database,
@@ -303,6 +305,15 @@ export class Store {
          ON CONFLICT (player_id, kind, what) WHERE practice_id IS NOT NULL DO NOTHING`,
       ),
     };
+    // Prepared only on a schema that has them (bench/store-fill.ts opens older ones).
+    const hasComputers = db.prepare("SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'computers'").get() !== undefined;
+    this.computer = hasComputers
+      ? {
+          byLevel: db.prepare<[number], PlayerRow>('SELECT p.id, p.name FROM computers c JOIN players p ON p.id = c.player_id WHERE c.level = ?'),
+          insert: db.prepare<[number, number]>('INSERT INTO computers (level, player_id) VALUES (?, ?)'),
+          among: db.prepare<[number, number], { n: number }>('SELECT count(*) AS n FROM computers WHERE player_id IN (?, ?)'),
+        }
+      : undefined;
     this.fillNameKeys();
   }
 
@@ -327,6 +338,22 @@ export class Store {
     const now = this.now();
     const info = this.s.insertPlayer.run(name, keys.lower, keys.upper, tokenHash, now, now);
     return { id: Number(info.lastInsertRowid), name };
+  }
+
+  /**
+   * The computer's player at a level (server/computer/player.ts names it), made on first use: a
+   * stored player so that its matches are recorded, with a token nobody holds.
+   */
+  computerPlayer(level: number, name: string, tokenHash: Buffer): PlayerRow {
+    const c = this.computer;
+    if (!c) throw new Error('the database has no computers table (migration 010)');
+    return this.db.transaction(() => {
+      const found = c.byLevel.get(level);
+      if (found) return found;
+      const row = this.createPlayer(name, tokenHash);
+      c.insert.run(level, row.id);
+      return row;
+    })();
   }
 
   /** A player's new name; throws on a name taken meanwhile (the UNIQUE constraints). */
@@ -419,6 +446,8 @@ export class Store {
    */
   private finish(r: MatchResult, now: number): void {
     let unrated = r.rated ? null : (r.unrated ?? 'few-shots');
+    // A match against the computer is never rated, whatever the service said.
+    if (this.computer && this.computer.among.get(r.winner, r.loser)!.n > 0) unrated = 'computer';
     if (unrated === null && this.s.pairRated.get({ a: r.winner, b: r.loser, kind: r.kind, since: now - DAY_MS })!.n >= RATED_PER_PAIR_PER_DAY) unrated = 'pair-limit';
     const inserted = this.s.insertResult.run(r.matchId, r.winner, r.loser, r.how, r.scores, unrated === null ? 1 : 0, unrated, now).changes === 1;
     if (!inserted) return;

@@ -22,6 +22,9 @@ export function mountLobby(root: HTMLElement, ctx: PageContext): () => void {
     h('option', { value: 'path' }, 'Full cue-ball path'),
     h('option', { value: 'none' }, 'No guidance'),
   );
+  const level = h('select', { name: 'level', 'aria-label': 'Level' }, ...[1, 2, 3, 4, 5].map((n) => h('option', { value: String(n) }, `Level ${n}`)));
+  level.value = '3';
+  const versus = h('button', { type: 'button' }, 'Play the computer');
   // A kind's usual race, put in unless the player typed their own.
   const usualRace = (k: string) => (k === 'threecushion' ? '15' : '1');
   let kindBefore = kind.value;
@@ -38,13 +41,15 @@ export function mountLobby(root: HTMLElement, ctx: PageContext): () => void {
     h('label', {}, 'Guidance ', guidance),
     h('label', {}, priv, ' Private'),
     h('button', { type: 'submit' }, 'Create table'),
+    h('span', { className: 'versus' }, ' or ', h('label', {}, 'Level ', level), ' ', versus),
   );
-  create.addEventListener('submit', (e) => {
-    e.preventDefault();
+  // The same table, the computer (thinking on the server) taking the second seat at once.
+  const open = (computer?: number) => {
     note.textContent = '';
     void session
       .request({
         type: 'create',
+        ...(computer === undefined ? {} : { computer }),
         kind: kind.value as LobbyRoom['kind'],
         // An empty field takes the server's default.
         ...(race.value === '' ? {} : { raceTo: Number(race.value) }),
@@ -56,7 +61,12 @@ export function mountLobby(root: HTMLElement, ctx: PageContext): () => void {
         if (m.type === 'room') ctx.navigate(`/room/${m.room.id}`);
         else if (m.type === 'error') note.textContent = m.message;
       }, (err: Error) => (note.textContent = err.message));
+  };
+  create.addEventListener('submit', (e) => {
+    e.preventDefault();
+    open();
   });
+  versus.addEventListener('click', () => open(Number(level.value)));
   // No maxlength: it counts UTF-16 code units and would cut an emoji in half. The limit counts
   // characters as people see them (a flag or a family emoji is one); a longer paste is cut whole.
   const name = h('input', { name: 'name', 'aria-label': 'Your name' });

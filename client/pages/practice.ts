@@ -5,6 +5,9 @@
 // own and cannot be submitted.
 import {
   cueBallId,
+  decide,
+  legalTargets,
+  POCKETS,
   newGame,
   placeBall,
   playShot,
@@ -28,15 +31,42 @@ import { Pace } from '../table/pace.ts';
 import { SoundPlayer, soundToggle } from '../table/sound.ts';
 import { Tray } from '../table/tray.ts';
 import { TableView } from '../table/view.ts';
-import { verdictSentence } from '../verdict.ts';
+import { POCKET_NAMES, verdictSentence } from '../verdict.ts';
+import { ComputerMind, preloadComputer } from '../computer/mind.ts';
+import type { Decision, Level } from '../../shared/ai/index.ts';
 
 const ME = 'me';
+/** The computer's id in a game against it here. */
+const CPU = 'computer';
+/** The least pause before the computer's move once the balls have stopped (ms), as on the server. */
+const COMPUTER_PAUSE_MS = 800;
+const VERSUS_KINDS = ['nineball', 'eightball', 'snooker', 'threecushion'] as const;
 
 /** A seed of this browser's own, for a run played offline (never submitted). */
 const localSeed = () => Math.floor(Math.random() * 2 ** 32);
 
 export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
-  const mode = h('select', { 'aria-label': 'Practice' }, h('option', { value: 'free' }, 'Free practice'), h('option', { value: 'run' }, 'Verified run'));
+  const mode = h(
+    'select',
+    { 'aria-label': 'Practice' },
+    h('option', { value: 'free' }, 'Free practice'),
+    h('option', { value: 'run' }, 'Verified run'),
+    h('option', { value: 'computer' }, 'Against the computer'),
+  );
+  const versusKind = h('select', { 'aria-label': 'Game' }, ...VERSUS_KINDS.map((k) => h('option', { value: k }, KIND_NAMES[k])));
+  const level = h('select', { 'aria-label': 'Level' }, ...[1, 2, 3, 4, 5].map((n) => h('option', { value: String(n) }, `Level ${n}`)));
+  level.value = '3';
+  // Against the computer at eight-ball: the pocket called for the 8, as in a room.
+  const called = h('select', { 'aria-label': 'Called pocket' }, h('option', { value: '' }, 'choose a pocket'), ...POCKETS.map((p) => h('option', { value: p }, POCKET_NAMES[p] ?? p)));
+  const calling = h('label', { hidden: true }, 'Called pocket for the 8 ', called);
+  const onTheEight = () => versus !== null && game.kind === 'eightball' && game.groups !== null && game.turn === ME && legalTargets(game).includes('8');
+  const versusButton = h('button', { type: 'button', onclick: () => ((mode.value = 'computer'), reset()) }, 'Play the computer');
+  // The computer's worker script is fetched now, so that it can be played with the network off.
+  void preloadComputer().then(
+    () => (versusButton.dataset.ready = 'true'),
+    () => undefined,
+  );
+  const mind = new ComputerMind();
   const layout = h('select', { 'aria-label': 'Layout' }, ...['nineball', 'eightball', 'snooker', 'threecushion', 'empty'].map((l) => h('option', { value: l }, KIND_NAMES[l] ?? 'Empty table')));
   const runKind = h('select', { 'aria-label': 'Run' }, ...(['snooker', 'nineball', 'threecushion'] as const).map((k) => h('option', { value: k }, KIND_NAMES[k])));
   const placing = h('input', { type: 'checkbox', 'aria-label': 'Place balls' });
@@ -53,6 +83,7 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
       { className: 'practice', 'aria-label': 'Practice' },
       h('h2', {}, 'Practice'),
       h('p', {}, mode, ' ', layout, ' ', runKind, ' ', start, ' ', h('label', {}, placing, ' Place balls')),
+      h('p', {}, versusKind, ' ', h('label', {}, 'Level ', level), ' ', versusButton, ' ', calling),
       tableBox,
       tray.element,
       h('p', {}, undoButton, ' ', replayButton, ' ', submit),
@@ -77,6 +108,9 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
   let started = 0;
   /** `issued`: the seed came from the server, so the run can be submitted (once). */
   let run: { kind: PracticeKind; seed: number; issued: boolean; submitted: boolean; shots: PracticeShot[]; score: number } | null = null;
+  /** A game against the computer: its level, the seed its decisions derive from, its moves so far. */
+  let versus: { level: Level; seed: number; moves: number } | null = null;
+  const nameOf = (id: string) => (id === PRACTICE_OPPONENT ? 'the table' : id === CPU && versus ? `Computer (level ${versus.level})` : id);
 
   const setup = (g: Game) => {
     game = g;
@@ -97,7 +131,7 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
   };
 
   const refresh = () => {
-    const active = !busy && !waiting && !run?.submitted && !placing.checked && game.winner === null && game.turn === ME;
+    const active = !busy && !waiting && !run?.submitted && !(placing.checked && !versus) && game.winner === null && game.turn === ME;
     aim!.set(game, cueBallId(game), active, 'path', () => {
       controls?.sync();
       if (!animator.playing) view!.draw(aim!.balls());
@@ -109,6 +143,7 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
     runKind.hidden = mode.value !== 'run';
     submit.hidden = mode.value !== 'run';
     undoButton.hidden = mode.value !== 'free';
+    calling.hidden = !onTheEight();
     submit.disabled = !run || !run.issued || run.submitted || run.shots.length === 0;
   };
 
@@ -117,6 +152,16 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
     const mine = ++started;
     waiting = false;
     run = null;
+    versus = null;
+    mind.stop();
+    if (mode.value === 'computer') {
+      const lv = Number(level.value) as Level;
+      versus = { level: lv, seed: localSeed(), moves: 0 };
+      const kind = versusKind.value as (typeof VERSUS_KINDS)[number];
+      setup(newGame(kind, [ME, CPU], { seed: versus.seed, ...(kind === 'threecushion' ? { raceTo: 5 } : {}) }));
+      info.textContent = `${KIND_NAMES[kind]} against the computer (level ${lv}), thinking in this browser: you break.`;
+      return;
+    }
     if (mode.value === 'free') {
       setup(newGame('practice', [ME], { layout: layout.value as PracticeLayout }));
       info.textContent = 'Free practice: aim with the mouse (a click holds the aim) or the arrow keys, Space or Shoot to play.';
@@ -145,9 +190,10 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
   }
 
   function shoot(): void {
-    if (busy || waiting || run?.submitted || placing.checked || game.winner !== null || game.turn !== ME || !aim) return;
+    if (busy || waiting || run?.submitted || (placing.checked && !versus) || game.winner !== null || game.turn !== ME || !aim) return;
     const s = aim.state;
-    const shot = { ball: cueBallId(game), heading: s.heading, speed: s.speed, side: s.side, top: s.top };
+    const shot: PracticeShot['shot'] & { calledPocket?: (typeof POCKETS)[number] } = { ball: cueBallId(game), heading: s.heading, speed: s.speed, side: s.side, top: s.top };
+    if (onTheEight() && called.value) shot.calledPocket = called.value as (typeof POCKETS)[number];
     let played;
     try {
       played = playShot(game, { ...shot, player: ME }, s.cueBall);
@@ -170,9 +216,65 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
       game = played.game;
       const over = run && (game.turn !== ME || game.winner !== null);
       const end = !over ? '' : run?.issued ? ' The run is over: submit it.' : ' The run is over (offline: not submitted).';
-      const said = verdictSentence(played.game, v, (id) => (id === PRACTICE_OPPONENT ? 'the table' : id), { me: ME, shot, before: played.from });
-      info.textContent = `${said}${run ? ` Score ${run.score}.${end}` : ''}`;
+      const said = verdictSentence(played.game, v, nameOf, { me: ME, shot, before: played.from });
+      info.textContent = `${said}${run ? ` Score ${run.score}.${end}` : ''}${versusEnd()}`;
       refresh();
+      computerTurn();
+    });
+  }
+
+  const versusEnd = () => (versus && game.winner !== null ? (game.winner === ME ? ' You win.' : ' The computer wins.') : '');
+
+  /** The computer's move when it is on turn: thought out in the worker, played after a pause. */
+  function computerTurn(): void {
+    const v = versus;
+    if (!v || game.winner !== null || game.turn !== CPU) return;
+    const from = game;
+    const mine = started;
+    busy = true;
+    refresh();
+    const pause = new Promise((r) => setTimeout(r, COMPUTER_PAUSE_MS));
+    const seed = (v.seed + Math.imul(from.shots + 1, 0x9e3779b1)) >>> 0;
+    void Promise.all([mind.think(from, v.level, seed), pause]).then(
+      ([d]) => mine === started && game === from && playComputer(d),
+      (err: Error) => {
+        if (mine !== started) return;
+        busy = false;
+        info.textContent = `The computer could not play: ${err.message}`;
+        refresh();
+      },
+    );
+  }
+
+  function playComputer(d: Decision): void {
+    const v = versus!;
+    v.moves++;
+    if ('choice' in d) {
+      game = decide(game, CPU, d.choice);
+      busy = false;
+      info.textContent = verdictSentence(game, game.verdict!, nameOf, { me: ME });
+      refresh();
+      computerTurn();
+      return;
+    }
+    let played;
+    try {
+      played = playShot(game, d.shot, d.cueBall);
+    } catch (err) {
+      busy = false;
+      info.textContent = `The computer's shot was refused: ${(err as Error).message}`;
+      refresh();
+      return;
+    }
+    view!.canvas.dataset.outcomeHash = played.outcome.hash;
+    view!.canvas.dataset.computerMoves = String(v.moves);
+    last = played.outcome;
+    void pace.play(played.outcome).then(() => {
+      busy = false;
+      game = played.game;
+      info.textContent = `${verdictSentence(played.game, played.game.verdict!, nameOf, { me: ME, before: played.from })}${versusEnd()}`;
+      refresh();
+      computerTurn();
     });
   }
 
@@ -254,6 +356,7 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
   void ctx;
   return () => {
     started++; // a seed still on its way is dropped
+    mind.stop();
     stopSpace();
     pace.destroy();
     sound.destroy();

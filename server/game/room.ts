@@ -3,6 +3,7 @@
 import { SHOT_CLOCK_MIN_S, type GameKindName, type PlayerRef, type RoomView } from '../../shared/protocol/index.ts';
 import { newGame, tallyStep, type Game, type Tally } from '../../shared/rules/index.ts';
 import type { ConnId } from './lobby.ts';
+import type { Level } from '../../shared/ai/index.ts';
 
 export type RoomStatus = 'waiting' | 'playing' | 'over' | 'closed';
 
@@ -37,6 +38,8 @@ export interface RoomState {
   readonly closesAt: number | null;
   /** What the match has achieved so far (snooker breaks, three-cushion runs, nine-ball break-and-runs). */
   readonly tally: Tally;
+  /** The computer's seat, when the room plays the computer (absent in rooms stored before). */
+  readonly computer?: { readonly id: string; readonly level: Level } | null;
 }
 
 /** How long a finished room stays open for a rematch or a last word (ms). */
@@ -47,6 +50,10 @@ export class Room {
   readonly spectators = new Set<ConnId>();
   /** Players whose seat hold has run out and whose opponent has been told so. */
   readonly holdsOver = new Set<string>();
+  /** The computer's decision being made for this state id, and the timer that plays it. */
+  thinking: { stateId: number; timer?: NodeJS.Timeout } | null = null;
+  /** When the balls of the last shot stop (ms since the epoch): the computer's pause counts from there. */
+  stillAt = 0;
 
   constructor(public state: RoomState) {}
 }

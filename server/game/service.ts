@@ -15,6 +15,12 @@ import { describeError, ServiceError } from './errors.ts';
 import { GuestLimit } from './guest-limit.ts';
 import { Lobby, type ConnId } from './lobby.ts';
 import { afterMove, deadlineAfter, gameFor, Room, roomView, type RoomState } from './room.ts';
+import { isLevel, type Decision, type Level } from '../../shared/ai/index.ts';
+import type { Thinker } from '../computer/pool.ts';
+import { computerName, decisionSeed, fallbackDecision, looksLikeComputer } from '../computer/player.ts';
+import { PointSchema, ShotSchema, type ShotInput } from '../../shared/protocol/index.ts';
+import * as v from 'valibot';
+import type { Point } from '../../shared/rules/index.ts';
 
 export type { ConnId } from './lobby.ts';
 
@@ -37,6 +43,8 @@ export interface ServiceOptions {
   readonly guestKeepMs?: number;
   /** Sockets one player may have welcomed at once (tabs); default MAX_TABS_PER_PLAYER. */
   readonly maxTabsPerPlayer?: number;
+  /** The computer opponent: where it thinks, and the least time between the balls stopping and its move (ms). */
+  readonly computer?: { readonly thinker: Thinker; readonly pauseMs: number };
 }
 
 type Msg<T extends ClientMessage['type']> = Extract<ClientMessage, { type: T }>;
@@ -82,6 +90,11 @@ export class GameService {
   private readonly roomsChanged = new Set<Room>();
   private readonly chatLimits = new ChatLimits();
   private chatPrunedAt = 0;
+  /** Where deliveries made outside a command go (the computer's moves); set by the binding. */
+  private outlet: ((deliveries: Delivery[]) => void) | undefined;
+  /** The computer's stored players, by level. */
+  private readonly computers = new Map<Level, PlayerRef>();
+  private readonly computerIds = new Set<string>();
 
   constructor(
     private readonly store: Store,
@@ -91,12 +104,20 @@ export class GameService {
     this.log = options.log ?? ((line) => console.error(line));
     this.lobby = new Lobby(this.now());
     this.guestLimit = options.guestsPerAddress === undefined ? undefined : new GuestLimit(options.guestsPerAddress);
-    for (const row of store.openRooms()) this.addRoom(new Room(JSON.parse(row.state) as RoomState));
+    for (const row of store.openRooms()) {
+      const room = this.addRoom(new Room(JSON.parse(row.state) as RoomState));
+      if (room.state.computer) this.computerIds.add(room.state.computer.id);
+    }
   }
 
   /** Rooms brought back from the store or made since, not closed. */
   get roomCount(): number {
     return this.lobby.rooms.size;
+  }
+
+  /** Where the service sends what it does by itself (the computer's moves), as the binding delivers. */
+  attach(outlet: (deliveries: Delivery[]) => void): void {
+    this.outlet = outlet;
   }
 
   /** A socket opened from `address` (its remote IP); the service is told before any of its frames. */
@@ -195,7 +216,10 @@ export class GameService {
     // A table nobody waits at any more (its player gone past the seat hold) closes.
     if (s.status === 'waiting' && s.seats.every((p) => this.awayPastHold(p.id, now))) return this.settle(room, { ...s, status: 'closed' });
     if (s.status !== 'playing' || s.game === null) return;
-    if (s.deadline !== null && s.deadline <= now) {
+    this.computerTurn(room);
+    // The computer's own turn is bounded by its think budget and pause, not by the shot clock.
+    const computersTurn = s.computer !== undefined && s.computer !== null && s.game.turn === s.computer.id && this.options.computer !== undefined;
+    if (s.deadline !== null && s.deadline <= now && !computersTurn) {
       if (s.seats.every((p) => !this.lobby.connected(p.id))) {
         // Nobody is there to play: the clock stops until a player comes back, so that no game
         // is decided by timeouts alone.
@@ -215,6 +239,7 @@ export class GameService {
 
   /** A player disconnected for longer than the seat hold. */
   private awayPastHold(playerId: string, now: number): boolean {
+    if (this.isComputer(playerId)) return false;
     const dropped = this.lobby.droppedSince(playerId);
     return dropped !== undefined && dropped + this.options.seatHoldMs <= now;
   }
@@ -337,6 +362,7 @@ export class GameService {
     const name = normalizeName(raw);
     const problem = nameProblem(name);
     if (problem !== undefined) throw new ServiceError('bad-name', problem);
+    if (looksLikeComputer(name)) throw new ServiceError('name-taken', `the name "${name}" is the computer's`);
     if (this.store.nameOwner(name, self) !== undefined) throw new ServiceError('name-taken', `the name "${name}" is taken, or one that looks like it`);
     return name;
   }
@@ -370,6 +396,9 @@ export class GameService {
   }
 
   private create(conn: ConnId, player: PlayerRef, msg: Msg<'create'>): void {
+    const level = msg.computer;
+    if (level !== undefined && !isLevel(level)) throw new ServiceError('bad-message', 'computer: must be a level from 1 to 5 (a whole number)');
+    if (level !== undefined && !this.options.computer) throw new ServiceError('bad-message', 'computer: this server does not run the computer opponent');
     let open = 0;
     for (const room of this.lobby.rooms.values()) {
       if (room.state.createdBy === player.id && (room.state.status === 'waiting' || room.state.status === 'playing')) open++;
@@ -400,10 +429,99 @@ export class GameService {
       closesAt: null,
       tally: EMPTY_TALLY,
     };
-    this.store.createRoom({ ...state, createdBy: Number(player.id), state: JSON.stringify(state) });
-    const room = this.addRoom(new Room(state));
-    this.broadcastRoom(room, conn, msg.id);
+    const computer = level === undefined ? undefined : this.computerPlayer(level);
+    const seated: RoomState = computer ? { ...state, seats: [player, computer], computer: { id: computer.id, level: level! } } : state;
+    this.store.createRoom({ ...seated, createdBy: Number(player.id), state: JSON.stringify(seated) });
+    const room = this.addRoom(new Room(seated));
     if (!state.private) this.lobbyChanged = true;
+    // Against the computer the game starts at once, the person breaking.
+    if (computer) this.startMatch(room, { ...seated, order: [player.id, computer.id] }, conn, msg.id);
+    else this.broadcastRoom(room, conn, msg.id);
+  }
+
+  /** The computer's stored player at a level (made on first use). */
+  private computerPlayer(level: Level): PlayerRef {
+    let p = this.computers.get(level);
+    if (!p) {
+      const row = this.store.computerPlayer(level, computerName(level), hashToken(newToken()));
+      p = { id: String(row.id), name: row.name };
+      this.computers.set(level, p);
+      this.computerIds.add(p.id);
+    }
+    return p;
+  }
+
+  private isComputer(playerId: string): boolean {
+    return this.computerIds.has(playerId);
+  }
+
+  /**
+   * Asks the computer for its move when it is on turn and not already thinking about this state.
+   * The decision comes back from a worker; it is played once the balls of the last shot have
+   * stopped and the pause has passed, through the same steps as a person's move.
+   */
+  private computerTurn(room: Room): void {
+    const s = room.state;
+    const c = s.computer;
+    const options = this.options.computer;
+    if (!c || !options || s.status !== 'playing' || s.game === null || s.game.winner !== null || s.game.turn !== c.id) return;
+    if (room.thinking?.stateId === s.stateId) return;
+    clearTimeout(room.thinking?.timer);
+    const stateId = s.stateId;
+    const game = s.game;
+    const thinking: { stateId: number; timer?: NodeJS.Timeout } = { stateId };
+    room.thinking = thinking;
+    const playAt = Math.max(this.now(), room.stillAt) + options.pauseMs;
+    options.thinker
+      .think({ game, level: c.level, seed: decisionSeed(s.id, s.matchId, stateId) })
+      .catch((err: unknown) => {
+        this.log(`computer in room ${s.id}: ${(err as Error).message}; it plays a simple stroke`);
+        return fallbackDecision(game);
+      })
+      .then((decision) => {
+        if (room.thinking !== thinking) return;
+        thinking.timer = setTimeout(() => this.computerPlays(room, thinking, decision), Math.max(0, playAt - this.now()));
+        thinking.timer.unref?.();
+      })
+      .catch((err: unknown) => this.log(`computer in room ${s.id}: ${(err as Error).stack ?? String(err)}`));
+  }
+
+  /** Plays the computer's decision if the room is still where it was; a refused one gives way to a fallback. */
+  private computerPlays(room: Room, thinking: NonNullable<Room['thinking']>, decision: Decision): void {
+    const s = room.state;
+    if (room.thinking !== thinking || this.lobby.rooms.get(s.id) !== room) return;
+    if (s.status !== 'playing' || s.game === null || s.stateId !== thinking.stateId || s.game.turn !== s.computer?.id) return;
+    const me = s.seats.find((p) => p.id === s.computer!.id)!;
+    const game = s.game;
+    const tries: (() => void)[] = [
+      () => this.playDecision(room, game, me, decision),
+      () => this.playDecision(room, game, me, fallbackDecision(game)),
+      () => this.move(room, afterMove(s, shotClockExpired(game), 'played', this.now()), { type: 'clock', player: me.id }),
+    ];
+    for (const [i, attempt] of tries.entries()) {
+      try {
+        attempt();
+        break;
+      } catch (err) {
+        this.out = [];
+        const last = i === tries.length - 1;
+        this.log(`computer in room ${s.id}: move ${i + 1} refused: ${(err as Error).message}${last ? '; tried again at the next tick' : ''}`);
+        if (last) room.thinking = null;
+      }
+    }
+    this.outlet?.(this.flush());
+  }
+
+  /** The computer's decision through the person's path: the stroke validated as a message is, or the choice. */
+  private playDecision(room: Room, game: Game, me: PlayerRef, d: Decision): void {
+    if ('choice' in d) {
+      this.move(room, afterMove(room.state, decide(game, me.id, d.choice), 'played', this.now()), { type: 'decide', player: me.id, choice: d.choice });
+      return;
+    }
+    const { player: _player, ...stroke } = d.shot;
+    const input = v.parse(ShotSchema, stroke);
+    const cueBall = d.cueBall === undefined ? undefined : v.parse(PointSchema, d.cueBall);
+    this.stroke(room, game, me, input, cueBall);
   }
 
   private join(conn: ConnId, player: PlayerRef, msg: Msg<'join'>): void {
@@ -424,6 +542,7 @@ export class GameService {
 
   /** A new match in the room: the first of `order` breaks. */
   private startMatch(room: Room, base: RoomState, conn: ConnId, id: Re): void {
+    room.thinking = null;
     const now = this.now();
     const seeded: RoomState = { ...base, seed: randomSeed(), frame: 0, frames: base.kind === 'snooker' ? {} : null, rematch: [], winner: null, how: null, left: [], closesAt: null, tally: EMPTY_TALLY, status: 'playing' };
     const started: RoomState = { ...seeded, stateId: base.stateId + 1, game: gameFor(seeded, 0) };
@@ -437,6 +556,7 @@ export class GameService {
     room.state = next;
     this.broadcastRoom(room, conn, id);
     this.lobbyChanged = true;
+    this.computerTurn(room);
   }
 
   private watch(conn: ConnId, msg: Msg<'watch'>): void {
@@ -481,7 +601,8 @@ export class GameService {
     } else if (s.status === 'over' && !s.left.includes(player.id)) {
       // Once both players have left a finished room it closes.
       const left = [...s.left, player.id];
-      this.settle(room, { ...s, left, status: left.length >= s.seats.length ? 'closed' : 'over' });
+      const gone = left.length + (s.computer ? 1 : 0);
+      this.settle(room, { ...s, left, status: gone >= s.seats.length ? 'closed' : 'over' });
     }
     this.seatsOf.get(player.id)?.delete(s.id);
     this.send([conn], { type: 'left', ...re(msg.id), room: s.id });
@@ -502,9 +623,16 @@ export class GameService {
 
   private shot(conn: ConnId, player: PlayerRef, msg: Msg<'shot'>): void {
     const { room, game } = this.onTurn(player, msg.room, msg.stateId);
+    this.stroke(room, game, player, msg.shot, msg.cueBall, conn, msg.id);
+  }
+
+  /** A stroke of the player on turn (a person's or the computer's): simulated, judged, stored, sent. */
+  private stroke(room: Room, game: Game, player: PlayerRef, input: ShotInput, cueBall: Point | undefined, conn?: ConnId, id?: Re): void {
+    const msg = { shot: input, cueBall };
     const shot = { ...msg.shot, player: player.id };
     const played = playShot(game, shot, msg.cueBall);
     const now = this.now();
+    room.stillAt = now + Math.ceil(played.outcome.duration * 1000);
     // The next player's clock starts once the balls have stopped.
     const moved = afterMove(room.state, played.game, 'played', now, now + Math.ceil(played.outcome.duration * 1000));
     const action: MatchAction = { type: 'shot', player: player.id, shot: msg.shot, ...(msg.cueBall ? { cueBall: msg.cueBall } : {}), hash: played.outcome.hash };
@@ -533,14 +661,16 @@ export class GameService {
       members.filter((c) => c !== conn),
       message,
     );
-    this.send([conn], { ...message, ...re(msg.id) });
+    if (conn !== undefined) this.send([conn], { ...message, ...re(id) });
     if (frameOver || after.status !== 'playing') this.broadcastRoom(room);
     if (after.status !== 'playing') this.lobbyChanged = true;
+    this.computerTurn(room);
   }
 
   private claim(conn: ConnId, player: PlayerRef, msg: Msg<'claim'>): void {
     const { room, game } = this.inPlay(player, msg.room);
     const other = room.state.seats.find((p) => p.id !== player.id)!;
+    if (this.isComputer(other.id)) throw new ServiceError('not-claimable', `${other.name} never leaves its seat`);
     const dropped = this.lobby.droppedSince(other.id);
     if (dropped === undefined) throw new ServiceError('not-claimable', `${other.name} is connected`);
     const until = dropped + this.options.seatHoldMs;
@@ -554,7 +684,9 @@ export class GameService {
     const s = room.state;
     if (s.status !== 'over' || s.seats.length < 2) throw new ServiceError('not-playing', 'a rematch is asked for once the game is over');
     if (s.left.length > 0) throw new ServiceError('not-playing', 'a player has left the room: no rematch');
-    const asked = s.rematch.includes(player.id) ? s.rematch : [...s.rematch, player.id];
+    // The computer always wants another game.
+    const willing = s.computer ? [s.computer.id] : [];
+    const asked = [...new Set([...s.rematch, player.id, ...willing])];
     if (asked.length < 2) {
       const next = { ...s, rematch: asked };
       this.store.saveChanges(this.change(next));
@@ -572,6 +704,7 @@ export class GameService {
     room.state = next;
     this.broadcastRoom(room, conn, id);
     if (next.status !== 'playing') this.lobbyChanged = true;
+    this.computerTurn(room);
   }
 
   /**
@@ -602,7 +735,8 @@ export class GameService {
     const loser = s.order.find((p) => p !== s.winner)!;
     const startedAt = this.store.matchStartedAt(matchId) ?? this.now();
     let unrated: UnratedReason | undefined;
-    if (!s.order.every((p) => (shots.get(p) ?? 0) >= RATED_MIN_SHOTS)) unrated = 'few-shots';
+    if (s.computer) unrated = 'computer';
+    else if (!s.order.every((p) => (shots.get(p) ?? 0) >= RATED_MIN_SHOTS)) unrated = 'few-shots';
     else if (this.now() - startedAt < this.minPlayMs) unrated = 'too-short';
     return {
       matchId,
@@ -673,6 +807,7 @@ export class GameService {
 
   private view(room: Room) {
     const view = roomView(room, (p) => {
+      if (this.isComputer(p.id)) return { connected: true };
       const dropped = this.lobby.droppedSince(p.id);
       return dropped === undefined ? { connected: true } : { connected: false, heldUntil: dropped + this.options.seatHoldMs };
     });

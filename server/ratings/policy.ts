@@ -16,7 +16,7 @@ export const DAY_MS = 86_400_000;
 export const ANCHOR_BOARD_SIZE = 10;
 
 /** Why a finished match was not rated. */
-export type UnratedReason = 'few-shots' | 'too-short' | 'pair-limit';
+export type UnratedReason = 'few-shots' | 'too-short' | 'pair-limit' | 'computer';
 
 /** A rating is provisional (off the leaderboard) while its RD is PROVISIONAL_RD or more. */
 export function provisional(r: Rating): boolean {
@@ -32,6 +32,8 @@ export function unratedSentence(reason: UnratedReason, minPlayMs: number): strin
       return `a rated match lasts at least ${Math.ceil(minPlayMs / 1000)} s`;
     case 'pair-limit':
       return `at most ${RATED_PER_PAIR_PER_DAY} rated matches of a kind between the same two players in 24 hours`;
+    case 'computer':
+      return 'matches against the computer are never rated';
   }
 }
 

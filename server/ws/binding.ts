@@ -69,6 +69,9 @@ export function bindWebSocket(wss: WebSocketServer, service: GameService, option
     setTimeout(() => socket.terminate(), CLOSE_GRACE_MS).unref();
   };
 
+  // What the service does by itself (the computer's moves) goes out the same way.
+  service.attach((deliveries) => deliver(deliveries));
+
   const helloDeadline = (conn: Conn, ms: number): NodeJS.Timeout =>
     setTimeout(() => {
       if (conn.welcomed) return;

@@ -2,7 +2,7 @@
 // frame with these and the browser client builds its messages to them, so both share one definition.
 // Unknown extra fields are dropped; numbers must be finite; strings and arrays are bounded.
 import * as v from 'valibot';
-import { CHAT_MAX, NAME_MAX, RACE_MAX, SHOT_CLOCK_MAX_S, SHOT_CLOCK_MIN_S } from './limits.ts';
+import { CHAT_MAX, COMPUTER_LEVEL_MAX, NAME_MAX, RACE_MAX, SHOT_CLOCK_MAX_S, SHOT_CLOCK_MIN_S } from './limits.ts';
 import { graphemeCount, plainTextProblem } from './text.ts';
 
 /** A request id, echoed as `re` by the reply or error it causes. */
@@ -74,6 +74,13 @@ export const CreateSchema = v.object({
   ),
   /** How much the players' pages may show of a shot before it is played (default 'contact'). */
   guidance: v.optional(v.picklist(GUIDANCE)),
+  /** Play the computer at this level (1 to 5): it takes the second seat and the game starts at once. */
+  computer: v.optional(
+    v.pipe(
+      v.number('must be a level from 1 to 5 (a whole number)'),
+      v.check((n) => Number.isInteger(n) && n >= 1 && n <= COMPUTER_LEVEL_MAX, `must be a level from 1 to ${COMPUTER_LEVEL_MAX} (a whole number)`),
+    ),
+  ),
 });
 export const RenameSchema = v.object({ type: v.literal('rename'), id: RequestId, name: plainText(NAME_MAX) });
 const roomCommand = <T extends string>(type: T) => v.object({ type: v.literal(type), id: RequestId, room: RoomId });

@@ -30,3 +30,6 @@ export const MAX_TABS_PER_PLAYER = 10;
 /** WebSocket close codes the server uses. */
 export const CLOSE_TOO_BIG = 1009;
 export const CLOSE_POLICY = 1008;
+
+/** The computer's levels run from 1 to this (shared/ai). */
+export const COMPUTER_LEVEL_MAX = 5;

@@ -1,0 +1,172 @@
+// A small pool of worker threads where the computer thinks, so that a search of thousands of
+// simulations never runs on the event loop. The worker is bundled by esbuild once at start (Node's
+// workers do not inherit tsx's loader), which works alike under `node --import tsx` and npm start.
+// A task that runs past its budget has its worker terminated (and replaced) and is rejected; so is
+// a task whose worker crashes. Callers play a fallback then.
+import { build } from 'esbuild';
+import { mkdtempSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { Worker } from 'node:worker_threads';
+import type { Decision, Level } from '../../shared/ai/index.ts';
+import type { Game } from '../../shared/rules/index.ts';
+
+export interface ThinkTask {
+  readonly game: Game;
+  readonly level: Level;
+  readonly seed: number;
+}
+
+/** What the game service needs of the pool (a fake in unit tests). */
+export interface Thinker {
+  think(task: ThinkTask): Promise<Decision>;
+  close(): Promise<void>;
+}
+
+export interface PoolOptions {
+  /** Worker threads. */
+  readonly size: number;
+  /** Longest a task may run in a worker before it is given up (ms). */
+  readonly budgetMs: number;
+  readonly log?: (line: string) => void;
+}
+
+interface Pending {
+  readonly id: number;
+  readonly task: ThinkTask;
+  resolve(d: Decision): void;
+  reject(e: Error): void;
+}
+
+interface Slot {
+  worker: Worker;
+  busy: Pending | null;
+  timer?: NodeJS.Timeout;
+}
+
+/** The wait before a crashed worker is replaced (ms). */
+const RESPAWN_MS = 1000;
+const WORKER_SOURCE = fileURLToPath(new URL('./worker.ts', import.meta.url));
+
+/** Bundles the worker into a temporary .mjs, removed when the process exits. */
+async function bundleWorker(): Promise<string> {
+  const dir = mkdtempSync(join(tmpdir(), 'baize-computer-'));
+  const outfile = join(dir, 'worker.mjs');
+  process.once('exit', () => rmSync(dir, { recursive: true, force: true }));
+  await build({ entryPoints: [WORKER_SOURCE], outfile, bundle: true, platform: 'node', format: 'esm', target: 'node20', packages: 'external', logLevel: 'warning' });
+  return outfile;
+}
+
+export class ComputerPool implements Thinker {
+  private readonly slots: Slot[] = [];
+  private readonly queue: Pending[] = [];
+  private nextId = 1;
+  private closed = false;
+  private readonly log: (line: string) => void;
+  private readonly ready: Promise<string>;
+  private file: string | undefined;
+
+  constructor(private readonly options: PoolOptions) {
+    this.log = options.log ?? ((line) => console.error(line));
+    this.ready = bundleWorker();
+    this.ready.then(
+      (file) => {
+        this.file = file;
+        for (let i = 0; i < options.size && !this.closed; i++) this.slots.push(this.spawn());
+        this.pump();
+      },
+      (err: unknown) => {
+        this.log(`computer: the worker could not be built: ${(err as Error).message}`);
+        for (const p of this.queue.splice(0)) p.reject(new Error('no worker'));
+      },
+    );
+  }
+
+  /** Tasks waiting for a worker and running. */
+  get load(): number {
+    return this.queue.length + this.slots.filter((s) => s.busy).length;
+  }
+
+  think(task: ThinkTask): Promise<Decision> {
+    if (this.closed) return Promise.reject(new Error('the pool is closed'));
+    return new Promise<Decision>((resolve, reject) => {
+      this.queue.push({ id: this.nextId++, task, resolve, reject });
+      this.pump();
+    });
+  }
+
+  async close(): Promise<void> {
+    this.closed = true;
+    for (const p of this.queue.splice(0)) p.reject(new Error('the pool is closed'));
+    await Promise.all(
+      this.slots.map((s) => {
+        clearTimeout(s.timer);
+        s.busy?.reject(new Error('the pool is closed'));
+        s.busy = null;
+        return s.worker.terminate();
+      }),
+    );
+  }
+
+  private spawn(): Slot {
+    const slot: Slot = { worker: new Worker(this.file!), busy: null };
+    slot.worker.unref();
+    slot.worker.on('message', (m: { id: number; decision?: Decision; error?: string }) => {
+      const p = slot.busy;
+      if (!p || p.id !== m.id) return;
+      clearTimeout(slot.timer);
+      slot.busy = null;
+      if (m.decision) p.resolve(m.decision);
+      else p.reject(new Error(m.error ?? 'no decision'));
+      this.pump();
+    });
+    slot.worker.on('error', (err) => this.replace(slot, `crashed: ${err.message}`));
+    slot.worker.on('exit', (code) => {
+      if (!this.closed && this.slots.includes(slot)) this.replace(slot, `exited with ${code}`);
+    });
+    return slot;
+  }
+
+  /** Gives up the slot's task and puts a fresh worker in its place. */
+  private replace(slot: Slot, why: string, timedOut = false): void {
+    const i = this.slots.indexOf(slot);
+    if (i < 0) return;
+    clearTimeout(slot.timer);
+    const p = slot.busy;
+    slot.busy = null;
+    this.slots.splice(i, 1);
+    void slot.worker.terminate();
+    this.log(`computer: a worker ${why}`);
+    p?.reject(new Error(`the worker ${why}`));
+    // A worker given up for its budget is replaced at once; one that crashed a second later, so
+    // that a worker failing as it starts cannot spin.
+    const respawn = () => {
+      if (this.closed) return;
+      this.slots.push(this.spawn());
+      this.pump();
+    };
+    if (timedOut) respawn();
+    else setTimeout(respawn, RESPAWN_MS).unref();
+    this.pump();
+  }
+
+  private pump(): void {
+    if (this.file === undefined) return;
+    for (const slot of this.slots) {
+      if (slot.busy || this.queue.length === 0) continue;
+      const p = this.queue.shift()!;
+      slot.busy = p;
+      slot.timer = setTimeout(() => this.replace(slot, `took longer than ${this.options.budgetMs} ms`, true), this.options.budgetMs);
+      slot.timer.unref();
+      try {
+        slot.worker.postMessage({ id: p.id, ...p.task });
+      } catch (err) {
+        // A task that cannot be sent (not plain data) frees its worker at once.
+        clearTimeout(slot.timer);
+        slot.busy = null;
+        p.reject(err as Error);
+      }
+    }
+  }
+}
