@@ -2,6 +2,7 @@
 // DOM and no clock.
 import { describe, expect, it } from 'vitest';
 import { reduce, type RoomAction, type ShotMessage } from '../../../client/room/reducer.ts';
+import { clockLeft, resultView, verdictText } from '../../../client/room/render.ts';
 import { concedeArmed, CONFIRM_MS, initialRoomState, myTurn, type RoomPageState } from '../../../client/room/state.ts';
 import type { RoomView } from '../../../shared/protocol/index.ts';
 import { newGame, playShot, type Game } from '../../../shared/rules/index.ts';
@@ -117,5 +118,35 @@ describe('room page reducer', () => {
     expect(rated.ratedAfter).toBe(7);
     expect(rated.ratings).toEqual({ a: { before: 1500 } });
     expect(reduce(rated, { type: 'rating', match: 6, player: 'b', when: 'after', rating: 1 })).toBe(rated);
+  });
+});
+
+describe('room page render (words from the state alone)', () => {
+  it('the referee\'s line: waiting, to break, a notice, and an ended match not rated', () => {
+    expect(verdictText(start('a', roomView({ status: 'waiting', game: null, stateId: 0 })))).toBe('Waiting for an opponent.');
+    const s = start('a');
+    expect(verdictText(s)).toBe('Ann to break.');
+    expect(verdictText(reduce(s, { type: 'notice', text: 'Call a pocket for the 8 first.' }))).toBe('Call a pocket for the 8 first.');
+    const over = start('a', roomView({ status: 'over', winner: 'b', rated: false, unrated: 'too short' }));
+    expect(verdictText(over)).toBe('Bob wins. Not rated: too short.');
+    expect(resultView(over)?.seated).toBe(true);
+    expect(resultView(s)).toBeNull();
+  });
+
+  it('the shot clock shows full while the last shot\'s balls roll, and nothing once over', () => {
+    const s = { ...start('a'), deadline: 100_000 };
+    expect(clockLeft(s, 0)).toBe(30);
+    expect(clockLeft(s, 90_500)).toBe(10);
+    expect(clockLeft(s, 200_000)).toBe(0);
+    expect(clockLeft({ ...s, room: { ...s.room!, status: 'over' } }, 0)).toBeNull();
+  });
+
+  it('the result dialog\'s key changes when a rematch is asked, not otherwise', () => {
+    const over = start('a', roomView({ status: 'over', winner: 'a', rated: false }));
+    const again = reduce(over, { type: 'room', room: roomView({ status: 'over', winner: 'a', rated: false, spectators: 3 }) });
+    expect(resultView(again)?.key).toBe(resultView(over)?.key);
+    const asked = reduce(over, { type: 'room', room: roomView({ status: 'over', winner: 'a', rated: false, rematch: ['b'] }) });
+    expect(resultView(asked)?.note).toBe('Bob asks for a rematch.');
+    expect(resultView(asked)?.key).not.toBe(resultView(over)?.key);
   });
 });
