@@ -108,7 +108,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
 
   const handlers: RoomHandlers = {
     join: () => void session.request({ type: 'join', room: id }),
-    copy: (invite) => navigator.clipboard?.writeText(invite) ?? Promise.reject(new Error('no clipboard')),
+    copy: (invite) => navigator.clipboard?.writeText(invite),
     close: () => void session.request({ type: 'leave', room: id }).then(() => ctx.navigate('/')),
     concede: () => dispatch({ type: 'concede', now: Date.now() }),
     claim: () => session.send({ type: 'claim', room: id }),

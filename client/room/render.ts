@@ -11,7 +11,8 @@ import { concedeArmed, nameOf, seated, type RoomPageState } from './state.ts';
 /** What the page's buttons do (sending, navigating: the page's effects). */
 export interface RoomHandlers {
   join(): void;
-  copy(invite: string): Promise<unknown>;
+  /** Copies the invite link (undefined: no clipboard here). */
+  copy(invite: string): Promise<unknown> | undefined;
   close(): void;
   concede(): void;
   claim(): void;
@@ -81,7 +82,7 @@ export function actionItems(s: RoomPageState, now: number, origin: string, on: R
     const copied = h('span', { className: 'note', role: 'status' });
     items.push(
       h('span', { className: 'invite' }, 'Invite a player: ', h('a', { href: invite, 'aria-label': 'Invite link' }, invite)),
-      h('button', { type: 'button', onclick: () => void on.copy(invite).then(() => (copied.textContent = 'Copied.')) }, 'Copy invite link'),
+      h('button', { type: 'button', onclick: () => void on.copy(invite)?.then(() => (copied.textContent = 'Copied.')) }, 'Copy invite link'),
       h('button', { type: 'button', onclick: on.close }, 'Close table'),
       copied,
     );
