@@ -2,9 +2,13 @@
 // declarations and choices, chat. A shot is simulated here the instant it is struck (the
 // shooter's page) or the instant it is broadcast (every other page), from the same state and with
 // the same physics the server ran; each page compares its hash with the server's.
+//
+// This is the page's mount: it makes the elements, turns server messages and input into actions
+// for the reducer (room/reducer.ts), runs their effects (sending, animating, fetching ratings) and
+// draws the state (room/render.ts).
 import { simulate, type Outcome } from '../../shared/physics/index.ts';
 import type { RoomView, ServerMessage } from '../../shared/protocol/index.ts';
-import { cueBallId, legalTargets, placeCueBall, playShot, POCKETS, sceneOf, strikeOf, type Game, type Shot } from '../../shared/rules/index.ts';
+import { cueBallId, legalTargets, placeCueBall, playShot, sceneOf, strikeOf, type Game } from '../../shared/rules/index.ts';
 import { h, KIND_NAMES, link } from '../dom.ts';
 import type { PageContext } from '../main.ts';
 import { Aim, type Guidance } from '../table/aim.ts';
@@ -15,49 +19,28 @@ import { SoundPlayer, soundToggle } from '../table/sound.ts';
 import { Tray } from '../table/tray.ts';
 import { TableView } from '../table/view.ts';
 import { api } from '../net/api.ts';
-import { howOf, type RoomRatings } from '../room/state.ts';
-import { resultContent, renderResult } from '../room/result.ts';
-import { renderScoreboard } from '../room/scoreboard.ts';
+import { Declarations } from '../room/declarations.ts';
+import { isGap, reduce, type RoomAction, type ShotMessage } from '../room/reducer.ts';
+import { actionItems, playerItems, renderClock, renderResultView, resultView, scoreboardOf, titleText, verdictText, type RoomHandlers } from '../room/render.ts';
+import { CONFIRM_MS, initialRoomState, myTurn, seated, type RoomPageState } from '../room/state.ts';
 import { contactWarning, drawTargetRings, firstBallAlong } from '../room/targets.ts';
-import { POCKET_NAMES, verdictSentence, type VerdictHow } from '../verdict.ts';
 
 /** Hash mismatches with the server on this page (there should be none). */
 const stats = { mismatches: 0 };
 (globalThis as { baizeMismatches?: typeof stats }).baizeMismatches = stats;
 
-type ShotMessage = Extract<ServerMessage, { type: 'shot' }>;
-
-/** How long a first click on "Concede" waits for the second (ms). */
-const CONFIRM_MS = 4000;
-
 export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () => void {
   const { session } = ctx;
-  let room: RoomView | null = null;
-  /** A room message that came while a shot played, applied when it has (render). */
-  let pendingRoom: RoomView | null = null;
+  let state = initialRoomState(id, session.player?.id);
+  let closed = false;
   let view: TableView | null = null;
   let aim: Aim | null = null;
   let animator: Animator | null = null;
-  /** The game and stateId this page shows (the server's, or its own prediction of it). */
-  let game: Game | null = null;
-  let stateId = -1;
-  /** A shot of this page's in flight, or shots being animated: no new shot meanwhile. */
-  let busy = false;
+  /** Broadcast shots simulated here, waiting for their turn on the table. */
   const animations: Outcome[] = [];
-  /** The shot clock's end, from the last room or shot message (ms since the epoch). */
-  let deadline: number | undefined;
-  /** When "Concede" was clicked once (ms since the epoch). */
-  let concedeArmedAt = -Infinity;
-  /** What made the verdict shown (a stroke and its declarations, the clock, a concession...). */
-  let how: VerdictHow = {};
-  /** The players' ratings in this kind, fetched as the match starts and once it is over. */
-  const ratings: RoomRatings = {};
-  let ratedMatch: number | undefined;
-  let ratedAfter: number | undefined;
-  /** Ids of this page's chat lines in flight: a refusal (too fast) is said under the chat box. */
-  const chatIds = new Set<string>();
-  /** What the result dialog shows ('' while there is none). */
+  /** What the result dialog shows ('' while there is none), and the chat lines shown. */
   let resultKey = '';
+  let chatShown = 0;
 
   const title = h('h2', {}, 'Room');
   const players = h('ol', { className: 'players', 'aria-label': 'Players' });
@@ -66,7 +49,7 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   const tableBox = h('div', { className: 'table-box' });
   const tray = new Tray();
   const actions = h('div', { className: 'actions' });
-  const declarations = h('div', { className: 'declarations' });
+  const declarations = new Declarations();
   const chatLog = h('ul', { className: 'chat', 'aria-label': 'Chat' });
   const chatText = h('input', { maxlength: 200, 'aria-label': 'Message' });
   const chatNote = h('p', { className: 'note chat-note', role: 'status' });
@@ -77,28 +60,61 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   const warning = h('p', { className: 'warning', role: 'status', 'aria-label': 'Aim warning' });
   chat.addEventListener('submit', (e) => {
     e.preventDefault();
-    chatNote.textContent = '';
-    if (chatText.value.trim()) {
-      const sent = session.send({ type: 'chat', room: id, text: chatText.value });
-      if (sent !== undefined) chatIds.add(sent);
-    }
+    const sent = chatText.value.trim() ? session.send({ type: 'chat', room: id, text: chatText.value }) : undefined;
     chatText.value = '';
+    dispatch({ type: 'chat-sent', ...(sent !== undefined ? { id: sent } : {}) }, true);
+    renderChat();
   });
   // The chat shows once the room is known (an unknown room has none).
   chatLog.hidden = true;
   chat.hidden = true;
-  const section = h('section', { className: 'room', 'aria-label': 'Room' }, title, banner, players, scoreboard, clock, tableBox, tray.element, declarations, warning, actions, verdict, result, chatLog, chat);
+  const section = h('section', { className: 'room', 'aria-label': 'Room' }, title, banner, players, scoreboard, clock, tableBox, tray.element, declarations.element, warning, actions, verdict, result, chatLog, chat);
   root.append(section);
   // Every shot animates through the pace (fast forward) with its sounds.
   const sound = new SoundPlayer();
   const pace = new Pace({ play: (o, speed, from) => animator!.play(o, speed, from) }, sound);
   tableBox.before(h('div', { className: 'table-bar' }, soundToggle(), pace.button));
 
-  const me = () => session.player?.id;
-  const seated = () => !!room?.players.some((p) => p.id === me());
-  const myTurn = () => !!game && room?.status === 'playing' && game.winner === null && game.turn === me() && seated() && !busy && session.status !== 'reconnecting'; // (the server could not take a shot meanwhile)
-  const nameOf = (pid: string) => room?.players.find((p) => p.id === pid)?.name ?? pid;
-  const said = (g: Game) => (g.verdict ? verdictSentence(g, g.verdict, nameOf, how) : '');
+  /** The state with the session as it is now (its player, whether it is reconnecting). */
+  const current = (): RoomPageState => (state = reduce(state, { type: 'session', me: session.player?.id, reconnecting: session.status === 'reconnecting' }));
+
+  /** The next state from `a`, its effects run, and drawn unless `quiet` (a shot playing shows its end once it has). */
+  function dispatch(a: RoomAction, quiet = false): void {
+    if (closed) return;
+    const before = current();
+    state = reduce(before, a);
+    effects(before, state);
+    if (!quiet) render();
+  }
+
+  function effects(before: RoomPageState, after: RoomPageState): void {
+    if (after.concededAt !== before.concededAt) session.send({ type: 'concede', room: id });
+    else if (after.concedeArmedAt !== before.concedeArmedAt) setTimeout(() => !closed && render(), CONFIRM_MS);
+    if (after.room && after.ratedBefore !== undefined && after.ratedBefore !== before.ratedBefore) fetchRatings(after.room, after.ratedBefore, 'before');
+    if (after.room && after.ratedAfter !== undefined && after.ratedAfter !== before.ratedAfter) fetchRatings(after.room, after.ratedAfter, 'after');
+    if (after.missing && !before.missing) section.replaceChildren(h('h2', {}, 'No such room'), h('p', {}, 'This room does not exist or has closed. ', link('/', 'Back to the lobby'), '.'));
+  }
+
+  /** The players' ratings in this kind (a new player starts at 1500: docs/api.md). */
+  function fetchRatings(r: RoomView, match: number, when: 'before' | 'after'): void {
+    for (const p of r.players) {
+      void api<{ ratings?: Record<string, { rating: number }> }>(`/api/players/${encodeURIComponent(p.id)}`).then(
+        // Shown in the result dialog: nothing to draw before the match is over.
+        (body) => dispatch({ type: 'rating', match, player: p.id, when, rating: body.ratings?.[r.kind]?.rating ?? 1500 }, state.room?.status !== 'over'),
+        () => undefined,
+      );
+    }
+  }
+
+  const handlers: RoomHandlers = {
+    join: () => void session.request({ type: 'join', room: id }),
+    copy: (invite) => navigator.clipboard?.writeText(invite),
+    close: () => void session.request({ type: 'leave', room: id }).then(() => ctx.navigate('/')),
+    concede: () => dispatch({ type: 'concede', now: Date.now() }),
+    claim: () => session.send({ type: 'claim', room: id }),
+    rematch: () => session.send({ type: 'rematch', room: id }),
+    lobby: () => ctx.navigate('/'),
+  };
 
   let controls: ReturnType<typeof strokeControls> | null = null;
   const redraw = () => {
@@ -109,10 +125,11 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
   const ensureTable = (g: Game) => {
     if (view && view.spec.name === g.table) return;
     view?.destroy();
-    view = new TableView(tableBox, g.table, `${KIND_NAMES[room?.kind ?? ''] ?? ''} table`);
-    aim = new Aim(view, guidanceOf(room));
+    view = new TableView(tableBox, g.table, `${KIND_NAMES[state.room?.kind ?? ''] ?? ''} table`);
+    aim = new Aim(view, guidanceOf(state.room));
     view.setOverlay((c, v) => {
       // The balls on, ringed while the table is at rest (not during a shot's animation).
+      const { game, busy, room } = state;
       if (game && !busy && !animator?.playing && room?.status === 'playing' && game.winner === null) drawTargetRings(c, v, aim?.balls() ?? game.balls, legalTargets(game));
       aim?.draw(c);
     });
@@ -123,51 +140,34 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     controls.element.after(warning);
   };
 
-  const render = () => {
-    if (!busy && pendingRoom) {
-      room = pendingRoom;
-      deadline = pendingRoom.deadline;
-      pendingRoom = null;
-    }
-    if (!room) return;
-    // A room message that came while a shot played (a new frame, a placement) applies now.
-    if (!busy && room.stateId > stateId && room.game) adopt(room.game, room.stateId);
-    title.textContent = `${KIND_NAMES[room.kind] ?? room.kind}, race to ${room.raceTo}${room.private ? ' (private)' : ''}`;
-    const g = game;
-    players.replaceChildren(
-      ...room.players.map((p) =>
-        h(
-          'li',
-          { className: g?.turn === p.id && room?.status === 'playing' ? 'on-turn' : '' },
-          `${p.name}${p.id === me() ? ' (you)' : ''}: ${g ? (g.scores[p.id] ?? 0) : 0}`,
-          g?.kind === 'eightball' && g.groups ? ` · ${g.groups[p.id]}` : '',
-          // Three-cushion: whose cue ball is whose (the player on turn strikes theirs).
-          g?.kind === 'threecushion' && g.turn === p.id && room?.status === 'playing' ? ` · plays ${cueBallId(g)}` : '',
-          room?.frames ? ` (frames ${room.frames[p.id] ?? 0})` : '',
-          p.connected ? '' : ' · disconnected',
-        ),
-      ),
-    );
+  /** The chat's new lines and its note (drawn apart: a line never waits for a shot to end). */
+  function renderChat(): void {
+    const s = state;
+    chatNote.textContent = s.chatNote;
+    for (const line of s.chat.slice(chatShown)) chatLog.append(h('li', {}, h('strong', {}, line.from), ': ', line.text));
+    if (s.chat.length > chatShown) chatLog.scrollTop = chatLog.scrollHeight;
+    chatShown = s.chat.length;
+  }
+
+  function render(): void {
+    const s = current();
+    renderChat();
+    const room = s.room;
+    if (!room || s.missing) return;
+    const now = Date.now();
+    title.textContent = titleText(s);
+    players.replaceChildren(...playerItems(s));
     chatLog.hidden = false;
     chat.hidden = false;
-    scoreboard.replaceChildren(renderScoreboard(room.status === 'playing' ? g : null, nameOf));
-    verdict.textContent = room.status === 'waiting' ? 'Waiting for an opponent.' : g?.verdict ? said(g) : `${nameOf(g?.turn ?? '')} to break.`;
-    trackRatings(room);
-    if (room.status === 'over') {
-      const winner = room.winner ? nameOf(room.winner) : 'Nobody';
-      const words = g ? said(g) : '';
-      const end = words.includes(winner) && / wins?\b/.test(words) ? words : `${winner} wins. ${words}`.trim();
-      verdict.textContent = `${end}${room.rated === false ? (room.unrated ? ` Not rated: ${room.unrated}.` : ' Not rated.') : ''}`;
-      const asking = room.rematch?.find((pid) => pid !== me());
-      const asked = room.rematch?.includes(me() ?? '') ?? false;
-      const content = resultContent(room, g, nameOf, ratings, me());
-      const note = asking !== undefined ? `${nameOf(asking)} asks for a rematch.` : asked ? 'Rematch asked: waiting for the other player.' : '';
+    scoreboard.replaceChildren(scoreboardOf(s));
+    verdict.textContent = verdictText(s);
+    const rv = resultView(s);
+    if (rv) {
       // Drawn again only when it says something new, so that focus and clicks stay put.
-      const key = JSON.stringify([content, end, note, asked, seated()]);
-      if (key !== resultKey) {
+      if (rv.key !== resultKey) {
         const first = resultKey === '';
-        resultKey = key;
-        const dialog = renderResult(content, end, seated() ? { asked, onClick: () => session.send({ type: 'rematch', room: id }), note } : null, () => ctx.navigate('/'));
+        resultKey = rv.key;
+        const dialog = renderResultView(rv, handlers);
         result.replaceChildren(dialog);
         if (first) dialog.focus();
       }
@@ -175,141 +175,60 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
       resultKey = '';
       result.replaceChildren();
     }
-    actions.replaceChildren();
-    if (room.status === 'waiting' && !seated()) actions.append(h('button', { type: 'button', onclick: () => void session.request({ type: 'join', room: id }) }, 'Join'));
-    if (room.status === 'waiting' && seated()) {
-      const invite = `${location.origin}/room/${id}`;
-      const copied = h('span', { className: 'note', role: 'status' });
-      actions.append(
-        h('span', { className: 'invite' }, 'Invite a player: ', h('a', { href: invite, 'aria-label': 'Invite link' }, invite)),
-        h('button', { type: 'button', onclick: () => void navigator.clipboard?.writeText(invite).then(() => (copied.textContent = 'Copied.')) }, 'Copy invite link'),
-        h('button', { type: 'button', onclick: () => void session.request({ type: 'leave', room: id }).then(() => ctx.navigate('/')) }, 'Close table'),
-        copied,
-      );
-    }
-    if (room.status === 'playing' && seated()) {
-      // Conceding loses the match: a second click within a few seconds confirms it.
-      const armed = Date.now() - concedeArmedAt < CONFIRM_MS;
-      actions.append(h('button', { type: 'button', onclick: () => {
-        if (armed) session.send({ type: 'concede', room: id });
-        else {
-          concedeArmedAt = Date.now();
-          setTimeout(render, CONFIRM_MS);
-        }
-        render();
-      } }, armed ? 'Really concede? Click again' : 'Concede'));
-    }
-    if (room.status === 'playing' && room.players.some((p) => !p.connected && p.heldUntil !== undefined && p.heldUntil <= Date.now()) && seated())
-      actions.append(h('button', { type: 'button', onclick: () => session.send({ type: 'claim', room: id }) }, 'Claim the game'));
-    if (!seated()) actions.append(h('span', { className: 'note' }, `Watching · ${room.spectators} watching`));
-    renderDeclarations();
+    actions.replaceChildren(...actionItems(s, now, location.origin, handlers));
+    const turn = myTurn(s);
+    declarations.update(s.game, turn, (choice) => session.send({ type: 'decide', room: id, stateId: state.stateId, choice }));
+    const g = s.game;
     if (g) {
       ensureTable(g);
-      aim!.set(g, cueBallId(g), myTurn(), guidanceOf(room), () => {
+      aim!.set(g, cueBallId(g), turn, guidanceOf(room), () => {
         controls?.sync();
         warn();
         redraw();
       });
-      controls!.enable(myTurn());
+      controls!.enable(turn);
       // No cue for a spectator, nor while it is the other player's turn or the game is over.
-      controls!.element.hidden = !seated() || room.status !== 'playing' || g.winner !== null || g.turn !== me();
+      controls!.element.hidden = !seated(s) || room.status !== 'playing' || g.winner !== null || g.turn !== s.me;
       warn();
-      if (!busy) tray.update(g, animator!.pocketOrder);
+      if (!s.busy) tray.update(g, animator!.pocketOrder);
       redraw();
     }
-  };
-
-  const pushOut = h('input', { type: 'checkbox', 'aria-label': 'Push-out' });
-  // No call or nomination is made until the player makes one: a default would be a silent choice.
-  const called = h(
-    'select',
-    { 'aria-label': 'Called pocket' },
-    h('option', { value: '' }, 'choose a pocket'),
-    ...POCKETS.map((p) => h('option', { value: p }, POCKET_NAMES[p] ?? p)),
-  );
-  const nominated = h('select', { 'aria-label': 'Nominated ball' });
-  /** The shot count the declarations were made for: a new stroke starts with none. */
-  let declaredAt = -1;
-  const renderDeclarations = () => {
-    declarations.replaceChildren();
-    const g = game;
-    if (!g || !myTurn()) return;
-    if (g.shots !== declaredAt) {
-      declaredAt = g.shots;
-      called.value = '';
-      nominated.value = '';
-      pushOut.checked = false;
-    }
-    if (g.kind === 'nineball' && g.phase === 'push-out') declarations.append(h('label', {}, pushOut, ' Push-out'));
-    if (g.kind === 'eightball' && g.groups !== null && legalTargets(g).includes('8')) declarations.append(h('label', {}, 'Called pocket for the 8 ', called));
-    if (g.kind === 'snooker' && (g.on === 'colour' || g.freeBall)) {
-      const options = g.freeBall ? g.balls.filter((b) => b.id !== 'cue').map((b) => b.id) : ['yellow', 'green', 'brown', 'blue', 'pink', 'black'];
-      const kept = nominated.value;
-      const onTable = options.filter((o) => g.balls.some((b) => b.id === o));
-      nominated.replaceChildren(
-        h('option', { value: '' }, g.freeBall ? 'no free ball' : 'the colour hit first'),
-        ...onTable.map((o) => h('option', { value: o }, o)),
-      );
-      nominated.value = onTable.includes(kept) ? kept : '';
-      declarations.append(h('label', {}, 'Nominate ', nominated));
-    }
-    for (const choice of g.choices) {
-      const label = choice === 'pass' ? 'Pass (opponent plays)' : choice === 'rerack' ? 'Re-rack and break' : 'Re-rack, they break again';
-      declarations.append(h('button', { type: 'button', onclick: () => session.send({ type: 'decide', room: id, stateId, choice }) }, label));
-    }
-  };
-
-  /** The shot as aimed, with this turn's declarations. */
-  const aimedShot = (g: Game): Omit<Shot, 'player'> => {
-    const s = aim!.state;
-    const shot: Omit<Shot, 'player'> = { ball: cueBallId(g), heading: s.heading, speed: s.speed, side: s.side, top: s.top };
-    if (g.kind === 'nineball' && g.phase === 'push-out' && pushOut.checked) shot.pushOut = true;
-    if (g.kind === 'eightball' && g.groups !== null && legalTargets(g).includes('8') && called.value) shot.calledPocket = called.value as Shot['calledPocket'];
-    if (g.kind === 'snooker' && (g.on === 'colour' || g.freeBall) && nominated.value) shot.nominated = nominated.value;
-    return shot;
-  };
+  }
 
   /** This page's shot: simulated here at once and animated while the server confirms it. */
   function shoot(): void {
-    if (!myTurn() || !game || !aim) return;
-    const g = game;
-    if (g.kind === 'eightball' && g.groups !== null && legalTargets(g).includes('8') && !called.value) {
-      verdict.textContent = 'Call a pocket for the 8 first.';
-      return;
-    }
-    const shot = aimedShot(g);
-    const cueBall = aim.state.cueBall;
+    const s = current();
+    if (!myTurn(s) || !s.game || !aim) return;
+    const g = s.game;
+    if (declarations.missingCall(g)) return dispatch({ type: 'notice', text: 'Call a pocket for the 8 first.' });
+    const a = aim.state;
+    const shot = declarations.declare(g, { ball: cueBallId(g), heading: a.heading, speed: a.speed, side: a.side, top: a.top });
+    const cueBall = a.cueBall;
     let played;
     try {
-      played = playShot(g, { ...shot, player: me()! }, cueBall);
+      played = playShot(g, { ...shot, player: s.me! }, cueBall);
     } catch (err) {
-      verdict.textContent = (err as Error).message;
-      return;
+      return dispatch({ type: 'notice', text: (err as Error).message });
     }
     view!.canvas.dataset.outcomeHash = played.outcome.hash;
-    busy = true;
+    dispatch({ type: 'shot-sent' }, true);
     aim.disable();
     controls?.enable(false);
-    const sentState = stateId;
     // The server's answer is taken as soon as it comes; the table shows it once the shot has played.
-    const reply = session.request({ type: 'shot', room: id, stateId: sentState, shot, ...(cueBall ? { cueBall } : {}) }).then(
+    const reply = session.request({ type: 'shot', room: id, stateId: s.stateId, shot, ...(cueBall ? { cueBall } : {}) }).then(
       (m) => {
         if (m.type === 'shot') {
-          deadline = m.deadline;
           report(m, played.outcome.hash);
           if (m.outcome.hash !== played.outcome.hash) mismatch(m, played.outcome.hash);
-          adopt(m.game, m.stateId, m.shot);
         }
+        dispatch({ type: 'shot-reply', message: m }, true);
         return m;
       },
       () => null,
     );
     const shown = pace.play(played.outcome);
     void Promise.all([reply, shown]).then(([m]) => {
-      busy = false;
-      render();
-      // Refused: the table is back at the state the server holds; say why.
-      if (m?.type === 'error') verdict.textContent = `The server refused the shot: ${m.message}`;
+      dispatch({ type: 'shot-done', ...(m?.type === 'error' ? { refused: m.message } : {}) });
       void animate();
     });
   }
@@ -319,31 +238,28 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
    * the server's hash; its animation waits for the ones before it.
    */
   function replay(m: ShotMessage): void {
-    deadline = m.deadline;
-    if (!game || m.stateId !== stateId + 1) {
-      console.warn(`baize: shot ${m.stateId} in room ${m.room} follows state ${stateId} here: taking the server's state`);
-      report(m, `gap after ${stateId}`);
-      adopt(m.game, m.stateId); // a gap: take the server's state as it is
-      render();
-      return;
+    const s = current();
+    if (isGap(s, m)) {
+      console.warn(`baize: shot ${m.stateId} in room ${m.room} follows state ${s.stateId} here: taking the server's state`);
+      report(m, `gap after ${s.stateId}`);
+      return dispatch(m); // a gap: take the server's state as it is
     }
-    const from = m.cueBall ? placeCueBall(game, m.shot.player, m.cueBall) : game;
+    const from = m.cueBall ? placeCueBall(s.game!, m.shot.player, m.cueBall) : s.game!;
     const outcome = simulate(sceneOf(from), strikeOf(m.shot));
     view!.canvas.dataset.outcomeHash = outcome.hash;
     report(m, outcome.hash);
     if (outcome.hash !== m.outcome.hash) mismatch(m, outcome.hash);
-    adopt(m.game, m.stateId, m.shot);
+    dispatch(m, true);
     animations.push(outcome);
     void animate();
   }
 
   async function animate(): Promise<void> {
-    if (busy) return;
-    busy = true;
+    if (state.busy || animations.length === 0) return;
+    dispatch({ type: 'animating' }, true);
     aim?.disable();
     while (animations.length > 0) await pace.play(animations.shift()!);
-    busy = false;
-    render();
+    dispatch({ type: 'animated' });
   }
 
   /** A page opened with ?report=URL posts each hash it computed there (how a browser without a driver is checked). */
@@ -357,93 +273,33 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     console.warn(`baize: shot ${m.stateId} in room ${m.room}: this page computed ${mine}, the server ${m.outcome.hash}; taking the server's state`);
   }
 
-  function adopt(g: Game, sid: number, shot?: ShotMessage['shot']): void {
-    if (sid < stateId) return;
-    if (sid > stateId) {
-      const loser = g.verdict?.player;
-      const claimed = g.verdict?.loss === 'concession' && room?.players.some((p) => p.id === loser && !p.connected);
-      how = howOf(game, g, shot, claimed) ?? how;
-    }
-    game = g;
-    stateId = sid;
-  }
-
   /** The warning under the stroke controls: the aim's first ball is not a ball on. */
   function warn(): void {
-    const g = game;
+    const s = state;
+    const g = s.game;
     const cue = aim?.cuePosition();
-    const on = g && myTurn() && guidanceOf(room) !== 'none' && cue ? legalTargets(g) : [];
+    const on = g && myTurn(s) && guidanceOf(s.room) !== 'none' && cue ? legalTargets(g) : [];
     warning.textContent = on.length && cue && aim && g ? contactWarning(firstBallAlong(cue, aim.state.heading, aim.balls(), cueBallId(g), view!.spec.ballRadius), on) : '';
   }
 
-  /** Ratings before the match (as it starts) and after it (once over and rated). */
-  function trackRatings(r: RoomView): void {
-    if (r.match === undefined) return;
-    const fetchAll = (when: 'before' | 'after') =>
-      r.players.forEach((p) => void api<{ ratings?: Record<string, { rating: number }> }>(`/api/players/${encodeURIComponent(p.id)}`).then((body) => {
-        const rating = body.ratings?.[r.kind]?.rating;
-        // No rating yet in this kind: a new player starts at 1500 (docs/api.md).
-        ratings[p.id] = { ...ratings[p.id], [when]: rating ?? 1500 };
-        if (room?.status === 'over') render();
-      }, () => undefined));
-    if (r.match !== ratedMatch && r.status !== 'waiting') {
-      // A new match (or a page opened on one): the ratings before it, when it is still in play.
-      ratedMatch = r.match;
-      for (const k of Object.keys(ratings)) delete ratings[k];
-      if (r.status === 'playing') fetchAll('before');
-    }
-    if (r.status === 'over' && r.rated === true && ratedAfter !== r.match) {
-      ratedAfter = r.match;
-      fetchAll('after');
-    }
-  }
-
-  const stop = session.onMessage((m) => {
-    if (m.type === 'room' && m.room.id === id) {
-      if (busy && room !== null) {
-        // A shot is playing on this page: its end (a frame or the match won, a rematch asked)
-        // shows once its balls have stopped.
-        pendingRoom = m.room;
-        return;
-      }
-      pendingRoom = null;
-      room = m.room;
-      deadline = m.room.deadline;
-      if (!busy && m.room.stateId >= stateId) {
-        if (m.room.game) adopt(m.room.game, m.room.stateId);
-        else {
-          game = null;
-          stateId = m.room.stateId;
-        }
-      }
-      render();
-    } else if (m.type === 'shot' && m.room === id && m.re === undefined) {
-      replay(m);
-    } else if (m.type === 'chat' && m.room === id) {
-      chatLog.append(h('li', {}, h('strong', {}, m.from.name), ': ', m.text));
-      chatLog.scrollTop = chatLog.scrollHeight;
-    } else if (m.type === 'error' && m.re !== undefined && chatIds.delete(String(m.re))) {
-      // A chat line refused (too fast, or not allowed here): said to its sender by the chat box.
-      chatNote.textContent = `${m.message.charAt(0).toUpperCase()}${m.message.slice(1)}.`;
-    } else if (m.type === 'error' && m.code === 'no-room' && room === null) {
-      section.replaceChildren(h('h2', {}, 'No such room'), h('p', {}, 'This room does not exist or has closed. ', link('/', 'Back to the lobby'), '.'));
+  const stop = session.onMessage((m: ServerMessage) => {
+    // A room that comes while a shot plays on this page is held (and drawn) until the shot has played.
+    if (m.type === 'room' && m.room.id === id) dispatch(m, state.busy && state.room !== null);
+    else if (m.type === 'shot' && m.room === id && m.re === undefined) replay(m);
+    else if (m.type === 'chat' || m.type === 'error') {
+      dispatch(m, true);
+      renderChat();
     }
   });
   const stopStatus = session.onStatus((s) => {
     banner.textContent = s === 'reconnecting' ? 'Connection lost: reconnecting…' : '';
-    render();
+    dispatch({ type: 'session', me: session.player?.id, reconnecting: s === 'reconnecting' });
   });
   const stopSpace = spaceShoots(shoot);
-  const tick = setInterval(() => {
-    // While the last shot's balls still roll the deadline is further off than the clock's length:
-    // the clock shows full until they stop.
-    const left = deadline && room?.status === 'playing' ? Math.max(0, Math.min(room.shotClock, Math.ceil((deadline - Date.now()) / 1000))) : null;
-    clock.textContent = left === null ? '' : `${left} s`;
-    // The bar beside the seconds (no text of its own: the timer's text stays "N s").
-    if (left !== null && room) clock.append(clockBar(left / room.shotClock));
-  }, 250);
+  const tick = setInterval(() => renderClock(clock, state, Date.now()), 250);
   session.keep(`room:${id}`, { type: 'watch', room: id });
   return () => {
+    closed = true;
     stop();
     stopStatus();
     stopSpace();
@@ -453,20 +309,11 @@ export function mountRoom(root: HTMLElement, ctx: PageContext, id: string): () =
     animator?.stop();
     view?.destroy();
     session.forget(`room:${id}`);
-    if (!seated()) session.send({ type: 'leave', room: id });
+    if (!seated(current())) session.send({ type: 'leave', room: id });
   };
 }
 
 function guidanceOf(room: RoomView | null): Guidance {
   const g = (room as { guidance?: string } | null)?.guidance;
   return g === 'none' || g === 'path' ? g : 'contact';
-}
-
-/** The shot clock's bar: the time left as a fraction of the clock. */
-function clockBar(fraction: number): HTMLElement {
-  const bar = h('span', { className: 'clock-bar', 'aria-hidden': 'true' }, h('span', {}));
-  const fill = bar.firstChild as HTMLElement;
-  fill.style.width = `${Math.round(Math.max(0, Math.min(1, fraction)) * 100)}%`;
-  if (fraction <= 0.25) bar.classList.add('low');
-  return bar;
 }

@@ -159,6 +159,30 @@ describe.skipIf(!chromiumAvailable())('a table in Chromium', () => {
     await b.context().close();
   });
 
+  it('a shot the server refuses says why, and the player may shoot again', async () => {
+    const { a, b } = await twoPlayers();
+    const shoot = a.getByRole('button', { name: 'Shoot' });
+    await expect.poll(() => shoot.isEnabled(), { timeout: 10_000 }).toBe(true);
+    // The shot leaves for a state the server does not hold: it refuses it.
+    await a.evaluate(() => {
+      const send = WebSocket.prototype.send;
+      WebSocket.prototype.send = function (this: WebSocket, data: string) {
+        const m = JSON.parse(data) as { type: string; stateId?: number };
+        if (m.type === 'shot') m.stateId = (m.stateId ?? 0) + 5;
+        send.call(this, JSON.stringify(m));
+      } as typeof send;
+    });
+    await shoot.click();
+    const said = a.getByRole('status', { name: 'Referee' });
+    await expect.poll(() => said.textContent(), { timeout: 20_000 }).toMatch(/^The server refused the shot: ./);
+    // Still said once the page has settled, and the same player may shoot again.
+    await a.waitForTimeout(500);
+    expect(await said.textContent()).toMatch(/^The server refused the shot: ./);
+    await expect.poll(() => shoot.isEnabled(), { timeout: 10_000 }).toBe(true);
+    await a.context().close();
+    await b.context().close();
+  });
+
   it('says a chat line refused as too fast to its sender, by the chat box', async () => {
     const { a, b } = await twoPlayers();
     const text = a.getByRole('textbox', { name: 'Message' });
