@@ -73,6 +73,7 @@ export interface Choice {
 
 export function search(game: Game, candidates: readonly Candidate[], ctx: Context): Choice | null {
   const sigma = positionSigma(ctx.level.heading);
+  const look = ctx.level.lookahead;
   const staged: Choice[] = [];
   for (const c of candidates) {
     ctx.stats.candidates++;
@@ -84,13 +85,13 @@ export function search(game: Game, candidates: readonly Candidate[], ctx: Contex
       const fixed = corrected(game, c, first);
       if (fixed !== c.shot) {
         const second = attempt(game, c, fixed, ctx);
-        if (second && value(game, second.game, sigma) >= value(game, first.game, sigma) - 0.5) {
+        if (second && value(game, second.game, sigma, look) >= value(game, first.game, sigma, look) - 0.5) {
           shot = fixed;
           after = second.game;
         }
       }
     }
-    staged.push({ candidate: c, shot, value: value(game, after, sigma) });
+    staged.push({ candidate: c, shot, value: value(game, after, sigma, look) });
   }
   if (staged.length === 0) return null;
   // Stable: equal values keep the candidates' order.
@@ -103,7 +104,7 @@ export function search(game: Game, candidates: readonly Candidate[], ctx: Contex
     let total = 0;
     for (let i = 0; i < ctx.level.samples; i++) {
       const r = attempt(game, s.candidate, noisy(s.shot, ctx.level, random), ctx);
-      total += r === null ? -WIN / 2 : value(game, r.game, sigma);
+      total += r === null ? -WIN / 2 : value(game, r.game, sigma, look);
     }
     const mean = total / ctx.level.samples;
     if (!best || mean > best.value) best = { candidate: s.candidate, shot: s.shot, value: mean };

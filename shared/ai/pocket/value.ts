@@ -11,7 +11,8 @@ export function positionSigma(heading: number): number {
   return Math.max(heading, 0.0025);
 }
 
-export function value(before: Game, after: Game, sigma: number): number {
+/** Without lookahead (the lowest levels) the next shot's chance is not weighed: they pot and hope. */
+export function value(before: Game, after: Game, sigma: number, lookahead = true): number {
   const me = before.turn;
   if (after.winner !== null) return after.winner === me ? WIN : -WIN;
   const v = after.verdict;
@@ -25,7 +26,7 @@ export function value(before: Game, after: Game, sigma: number): number {
   } else if (before.kind === 'eightball' && v) {
     points = 0.15 * v.potted.length * (after.turn === me ? 1 : 0);
   }
-  if (after.turn === me && after.choices.length === 0) return points + 1 + 2 * bestChance(after, sigma);
-  const opp = bestChance(after, sigma);
+  if (after.turn === me && after.choices.length === 0) return points + 1 + (lookahead ? 2 * bestChance(after, sigma) : 0);
+  const opp = lookahead ? bestChance(after, sigma) : 0.5;
   return points - 0.3 - 2 * opp - (v?.foul ? 0.5 : 0);
 }
