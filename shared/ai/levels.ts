@@ -32,7 +32,7 @@ export const LEVELS: Readonly<Record<Level, LevelSpec>> = {
   2: { heading: 0.009, speed: 0.1, tip: 0.1, samples: 2, breadth: 6, lookahead: false, pots: 3, variants: 2, safeties: 6, spots: 2, banks: false },
   3: { heading: 0.005, speed: 0.06, tip: 0.06, samples: 4, breadth: 10, lookahead: true, pots: 4, variants: 5, safeties: 12, spots: 3, banks: true },
   4: { heading: 0.0025, speed: 0.04, tip: 0.04, samples: 6, breadth: 16, lookahead: true, pots: 5, variants: 9, safeties: 20, spots: 4, banks: true },
-  5: { heading: 0.001, speed: 0.02, tip: 0.02, samples: 10, breadth: 24, lookahead: true, pots: 6, variants: 14, safeties: 30, spots: 5, banks: true },
+  5: { heading: 0.001, speed: 0.02, tip: 0.02, samples: 12, breadth: 24, lookahead: true, pots: 6, variants: 14, safeties: 30, spots: 5, banks: true },
 };
 
 export function isLevel(n: unknown): n is Level {

@@ -52,7 +52,10 @@ export function pots(game: Game, cue: Point, sigma: number, banks: boolean): Pot
 
 /** A one-cushion bank: aimed at the pocket's image; both legs must be clear; judged as harder. */
 function bankGeometry(spec: TableSpec, balls: readonly Ball[], cue: Point, cueId: string, obj: Ball, pocket: PocketAim, image: Point, sigma: number): PotGeometry | null {
-  const geo = potGeometry(spec, balls, cue, cueId, obj, image, { ...pocket, nx: image.x - obj.x, ny: image.y - obj.y }, sigma, 0.6);
+  // The entry angle after the rail is not known here: the mouth is taken as seen at 45 degrees.
+  const d = dist(obj, image) || 1;
+  const normal = { ...pocket, nx: (0.7071 * (image.x - obj.x)) / d, ny: (0.7071 * (image.y - obj.y)) / d };
+  const geo = potGeometry(spec, balls, cue, cueId, obj, image, normal, sigma, 0.6);
   if (!geo) return null;
   // The pocket must be met after the rail: the image's leg must cross the rail line first.
   const X = spec.length / 2 - spec.ballRadius;

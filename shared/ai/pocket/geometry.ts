@@ -66,6 +66,25 @@ export function clearPath(balls: readonly Ball[], a: Point, b: Point, R: number,
   return true;
 }
 
+/**
+ * Whether a ball rolling from a to b passes across the mouth of a pocket (other than `except`):
+ * along a rail past a side pocket, say, where it would drop or catch the jaw.
+ */
+export function crossesPocket(spec: TableSpec, a: Point, b: Point, except: string): boolean {
+  const dx = b.x - a.x;
+  const dy = b.y - a.y;
+  const L2 = dx * dx + dy * dy;
+  for (const p of pocketAims(spec)) {
+    if (p.id === except) continue;
+    let t = L2 > 0 ? ((p.aim.x - a.x) * dx + (p.aim.y - a.y) * dy) / L2 : 0;
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
+    const ex = a.x + t * dx - p.aim.x;
+    const ey = a.y + t * dy - p.aim.y;
+    if (ex * ex + ey * ey < p.half * p.half) return true;
+  }
+  return false;
+}
+
 /** erf by Abramowitz and Stegun 7.1.27 (error below 5e-4): arithmetic only, so exact everywhere. */
 export function erf(x: number): number {
   const s = x < 0 ? -1 : 1;
@@ -116,18 +135,23 @@ export function potGeometry(
   const ux = (aim.x - obj.x) / d2;
   const uy = (aim.y - obj.y) / d2;
   const ghost = { x: obj.x - 2 * R * ux, y: obj.y - 2 * R * uy };
+  // The cue ball cannot reach a ghost inside a cushion (a ball frozen on a rail is not cut off it).
+  if (Math.abs(ghost.x) > spec.length / 2 - R + 1e-4 || Math.abs(ghost.y) > spec.width / 2 - R + 1e-4) return null;
   const d1 = dist(cue, ghost);
   if (d1 < 1e-6) return null;
   const cosCut = ((ghost.x - cue.x) * ux + (ghost.y - cue.y) * uy) / d1;
   if (cosCut < MAX_CUT_COS) return null;
   if (!clearPath(balls, cue, ghost, R, [cueId, obj.id])) return null;
   if (!clearPath(balls, obj, aim, R, [cueId, obj.id])) return null;
+  if (crossesPocket(spec, cue, ghost, '') || crossesPocket(spec, obj, aim, pocket.id)) return null;
   const cosIn = ux * pocket.nx + uy * pocket.ny;
   if (cosIn < 0.1) return null;
   const tol = Math.max(0.002, pocket.half * cosIn - 0.35 * R) * slack;
   const spread = (sigma * d1) / (2 * R * cosCut) + sigma;
   const p = erf(tol / d2 / (spread * 1.4142135623730951));
-  return { ghost, cosCut, d1, d2, ux, uy, p: p * (1 - 0.05 * d2) };
+  // Very short cue-ball runs are awkward (no room to stroke, double hits): trusted less.
+  const near = d1 < 0.12 ? 0.5 + d1 / 0.24 : 1;
+  return { ghost, cosCut, d1, d2, ux, uy, p: p * (1 - 0.05 * d2) * near };
 }
 
 /**

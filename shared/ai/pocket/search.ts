@@ -97,17 +97,38 @@ export function search(game: Game, candidates: readonly Candidate[], ctx: Contex
   // Stable: equal values keep the candidates' order.
   const order = staged.map((s, i) => i).sort((a, b) => staged[b]!.value - staged[a]!.value || a - b);
   const seed = Math.floor(ctx.random.uniform() * 0x100000000);
-  let best: Choice | null = null;
-  for (let k = 0; k < Math.min(ctx.level.breadth, order.length); k++) {
-    const s = staged[order[k]!]!;
-    const random = new Random(seed);
+  const runs = (s: Choice, seedOf: number, n: number): number => {
+    const random = new Random(seedOf);
     let total = 0;
-    for (let i = 0; i < ctx.level.samples; i++) {
+    for (let i = 0; i < n; i++) {
       const r = attempt(game, s.candidate, noisy(s.shot, ctx.level, random), ctx);
       total += r === null ? -WIN / 2 : value(game, r.game, sigma, look);
     }
-    const mean = total / ctx.level.samples;
-    if (!best || mean > best.value) best = { candidate: s.candidate, shot: s.shot, value: mean };
+    return total;
+  };
+  const n = ctx.level.samples;
+  const sampled = order.slice(0, ctx.level.breadth).map((i) => {
+    const s = staged[i]!;
+    return { s, total: runs(s, seed, n), n };
+  });
+  // The best of many noisy means is flattered by its luck (the winner's curse): the leaders are
+  // sampled again, twice as long, before one is chosen.
+  const ranked = sampled.map((x, i) => i).sort((a, b) => sampled[b]!.total / sampled[b]!.n - sampled[a]!.total / sampled[a]!.n || a - b);
+  const finalists = ranked.slice(0, Math.max(1, Math.ceil(sampled.length / 4)));
+  if (n > 1 && finalists.length > 1) {
+    const seed2 = seed ^ 0x5bd1e995;
+    for (const i of finalists) {
+      const x = sampled[i]!;
+      x.total += runs(x.s, seed2, 2 * n);
+      x.n += 2 * n;
+    }
+  }
+  if ((globalThis as any).AIDEBUG) for (const i of ranked.slice(0, 8)) { const x = sampled[i]!; console.error('cand', (x.total / x.n).toFixed(3), x.n, 'stageA', x.s.value.toFixed(3), JSON.stringify(x.s.candidate.pot), JSON.stringify(x.s.candidate.cueBall), x.s.shot.heading.toFixed(4), x.s.shot.speed.toFixed(2), x.s.shot.top, x.s.shot.side); }
+  let best: Choice | null = null;
+  for (const i of finalists) {
+    const x = sampled[i]!;
+    const mean = x.total / x.n;
+    if (!best || mean > best.value) best = { candidate: x.s.candidate, shot: x.s.shot, value: mean };
   }
   return best;
 }
