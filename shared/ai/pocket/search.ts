@@ -85,13 +85,13 @@ export function search(game: Game, candidates: readonly Candidate[], ctx: Contex
       const fixed = corrected(game, c, first);
       if (fixed !== c.shot) {
         const second = attempt(game, c, fixed, ctx);
-        if (second && value(game, second.game, sigma, look) >= value(game, first.game, sigma, look) - 0.5) {
+        if (second && value(game, second.game, sigma, look, ctx.level.heading) >= value(game, first.game, sigma, look, ctx.level.heading) - 0.5) {
           shot = fixed;
           after = second.game;
         }
       }
     }
-    staged.push({ candidate: c, shot, value: value(game, after, sigma, look) });
+    staged.push({ candidate: c, shot, value: value(game, after, sigma, look, ctx.level.heading) });
   }
   if (staged.length === 0) return null;
   // Stable: equal values keep the candidates' order.
@@ -102,7 +102,7 @@ export function search(game: Game, candidates: readonly Candidate[], ctx: Contex
     let total = 0;
     for (let i = 0; i < n; i++) {
       const r = attempt(game, s.candidate, noisy(s.shot, ctx.level, random), ctx);
-      total += r === null ? -WIN / 2 : value(game, r.game, sigma, look);
+      total += r === null ? -WIN / 2 : value(game, r.game, sigma, look, ctx.level.heading);
     }
     return total;
   };
@@ -123,7 +123,6 @@ export function search(game: Game, candidates: readonly Candidate[], ctx: Contex
       x.n += 2 * n;
     }
   }
-  if ((globalThis as any).AIDEBUG) for (const i of ranked.slice(0, 8)) { const x = sampled[i]!; console.error('cand', (x.total / x.n).toFixed(3), x.n, 'stageA', x.s.value.toFixed(3), JSON.stringify(x.s.candidate.pot), JSON.stringify(x.s.candidate.cueBall), x.s.shot.heading.toFixed(4), x.s.shot.speed.toFixed(2), x.s.shot.top, x.s.shot.side); }
   let best: Choice | null = null;
   for (const i of finalists) {
     const x = sampled[i]!;
