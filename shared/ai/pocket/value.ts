@@ -14,7 +14,7 @@ export function positionSigma(heading: number): number {
 
 /** Per-ball success the player expects of itself after the next pot (its level's hand). */
 function perBall(heading: number): number {
-  return Math.max(0.5, 0.93 - 15 * heading);
+  return Math.max(0.5, 0.97 - 15 * heading);
 }
 
 /** Balls the player on turn must still pot to win the rack. */
