@@ -2,7 +2,7 @@
 // cut (a dead-straight pot leaves no angle to move the cue ball), plus a grid of the legal area,
 // each scored by the best geometric pot from there. Every place returned passes placementProblem.
 import { tableSpec } from '../../physics/index.ts';
-import { cueBallId, legalTargets, placementProblem, type Ball, type Game, type Point } from '../../rules/index.ts';
+import { cueBallId, legalTargets, placementProblem, snookerMarks, type Ball, type Game, type Point } from '../../rules/index.ts';
 import { pocketAims } from './geometry.ts';
 import { chanceFrom } from './position.ts';
 
@@ -49,7 +49,8 @@ export function placements(game: Game, sigma: number, count: number): Point[] {
     for (let j = 0; j < ny; j++)
       spots.push({ x: -spec.length / 2 + ((i + 0.5) * spec.length) / nx, y: -spec.width / 2 + R + ((j + 0.5) * (spec.width - 2 * R)) / ny });
   if (area === 'D') {
-    for (let i = 0; i <= 8; i++) for (let j = -4; j <= 4; j++) spots.push({ x: -spec.length / 2 + 0.737 - (i * 0.29) / 8, y: (j * 0.29) / 4.2 });
+    const m = snookerMarks(spec);
+    for (let i = 0; i <= 8; i++) for (let j = -4; j <= 4; j++) spots.push({ x: m.baulkX - (i * m.dRadius) / 8, y: (j * m.dRadius) / 4.2 });
   }
   if (area === 'kitchen') {
     for (let i = 0; i < 5; i++) for (let j = -6; j <= 6; j++) spots.push({ x: -spec.length / 4 - 0.02 - (i * (spec.length / 4 - 0.05)) / 5, y: (j * (spec.width / 2 - 2 * R)) / 6 });
