@@ -2,7 +2,7 @@
 // on turn does, by the rules of shared/rules and the physics of shared/physics: pure and
 // deterministic (the same game, level and seed give the same decision in Node and every browser).
 import type { Game } from '../rules/index.ts';
-import { choosePocketShot } from './pocket-games.ts';
+import { choosePocketShot } from './pocket/index.ts';
 import { chooseCaromShot } from './carom.ts';
 import { isLevel, LEVELS } from './levels.ts';
 import { Random } from './random.ts';

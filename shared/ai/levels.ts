@@ -15,14 +15,24 @@ export interface LevelSpec {
   readonly breadth: number;
   /** Whether the search looks one shot ahead (position play). */
   readonly lookahead: boolean;
+  /** Pocket games: pots (object ball and pocket) tried per cue ball place. */
+  readonly pots: number;
+  /** Pocket games: speed and spin variants per pot (up to 14). */
+  readonly variants: number;
+  /** Pocket games: safety strokes tried. */
+  readonly safeties: number;
+  /** Pocket games: places tried for a ball in hand. */
+  readonly spots: number;
+  /** Pocket games: whether one-cushion banks are among the pots. */
+  readonly banks: boolean;
 }
 
 export const LEVELS: Readonly<Record<Level, LevelSpec>> = {
-  1: { heading: 0.02, speed: 0.15, tip: 0.15, samples: 1, breadth: 4, lookahead: false },
-  2: { heading: 0.01, speed: 0.1, tip: 0.1, samples: 2, breadth: 8, lookahead: false },
-  3: { heading: 0.005, speed: 0.06, tip: 0.06, samples: 4, breadth: 16, lookahead: true },
-  4: { heading: 0.0025, speed: 0.04, tip: 0.04, samples: 6, breadth: 24, lookahead: true },
-  5: { heading: 0.001, speed: 0.02, tip: 0.02, samples: 8, breadth: 32, lookahead: true },
+  1: { heading: 0.014, speed: 0.12, tip: 0.12, samples: 1, breadth: 3, lookahead: false, pots: 2, variants: 1, safeties: 0, spots: 1, banks: false },
+  2: { heading: 0.007, speed: 0.08, tip: 0.08, samples: 2, breadth: 6, lookahead: false, pots: 3, variants: 2, safeties: 6, spots: 2, banks: false },
+  3: { heading: 0.0035, speed: 0.05, tip: 0.05, samples: 4, breadth: 10, lookahead: true, pots: 4, variants: 5, safeties: 12, spots: 3, banks: true },
+  4: { heading: 0.0016, speed: 0.03, tip: 0.03, samples: 6, breadth: 16, lookahead: true, pots: 5, variants: 9, safeties: 20, spots: 4, banks: true },
+  5: { heading: 0.0007, speed: 0.015, tip: 0.015, samples: 12, breadth: 24, lookahead: true, pots: 6, variants: 14, safeties: 30, spots: 5, banks: true },
 };
 
 export function isLevel(n: unknown): n is Level {
