@@ -31,7 +31,7 @@ const D = Math.PI / 180;
 export const CAROM_BREADTH: Readonly<Record<Level, CaromBreadth>> = {
   1: { headingStep: 6 * D, cuts: 3, speeds: [3.5], sides: [-0.3, 0.3], tops: [0.2], regions: 2, judged: 2, samples: 2, probes: 0, probeGrid: 0 },
   2: { headingStep: 4 * D, cuts: 4, speeds: [3, 4.5], sides: [-0.3, 0.3], tops: [0.2], regions: 4, judged: 3, samples: 4, probes: 0, probeGrid: 0 },
-  3: { headingStep: 3 * D, cuts: 6, speeds: [2.5, 3.5, 4.8], sides: [-0.35, 0, 0.35], tops: [0.2], regions: 6, judged: 5, samples: 8, probes: 3, probeGrid: 60 },
-  4: { headingStep: 2.5 * D, cuts: 8, speeds: [2.3, 3.2, 4.3, 5.5], sides: [-0.4, -0.15, 0.15, 0.4], tops: [0.2], regions: 10, judged: 8, samples: 12, probes: 5, probeGrid: 100 },
-  5: { headingStep: 2 * D, cuts: 10, speeds: [2.2, 3, 4, 5.2], sides: [-0.4, -0.2, 0, 0.2, 0.4], tops: [0.2], regions: 14, judged: 10, samples: 16, probes: 6, probeGrid: 150 },
+  3: { headingStep: 4 * D, cuts: 5, speeds: [2.8, 4.2], sides: [-0.35, 0.35], tops: [0.2], regions: 5, judged: 4, samples: 6, probes: 2, probeGrid: 40 },
+  4: { headingStep: 3 * D, cuts: 6, speeds: [2.5, 3.5, 4.8], sides: [-0.4, 0, 0.4], tops: [0.2], regions: 8, judged: 6, samples: 8, probes: 3, probeGrid: 60 },
+  5: { headingStep: 2.5 * D, cuts: 8, speeds: [2.3, 3.2, 4.3, 5.4], sides: [-0.4, 0, 0.4], tops: [0.2], regions: 10, judged: 8, samples: 12, probes: 4, probeGrid: 80 },
 };
