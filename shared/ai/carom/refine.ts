@@ -37,6 +37,8 @@ export function refine(game: Game, seed: Stroke, ctx: Context): Region {
   const e = scan((k) => (k > maxUp || -k > maxDown ? false : scores({ ...mid, side: mid.side + k * SIDE_STEP })), SIDE_STEPS);
   stroke = { ...stroke, side: mid.side + e.centre * SIDE_STEP };
   const L = ctx.level;
+  // The scans are one axis at a time: the centre found may still miss, and then the seed is kept.
+  if (!scores(stroke)) return { stroke: seed, margin: { heading: 0.5 * HEADING_STEP / L.heading, speed: 0, side: 0 } };
   return {
     stroke,
     margin: {
