@@ -7,6 +7,7 @@ import { chooseShot as botShot } from '../../bots/strategy.ts';
 import { simulate } from '../../shared/physics/index.ts';
 import { newGame, playShot, type Game, type Shot, type ThreeCushionGame } from '../../shared/rules/index.ts';
 import { chooseShot, type Level } from '../../shared/ai/index.ts';
+import { Random } from '../../shared/ai/random.ts';
 
 export interface CaromTiming {
   readonly level: number;
@@ -49,6 +50,34 @@ export function pointsPerInning(level: Level, innings: number, timings: CaromTim
   return { innings: played, points };
 }
 
+/** Points per inning from seeded random layouts: each inning starts from a fresh layout. */
+export function pointsFromLayouts(level: Level, innings: number, timings: CaromTiming[]): { innings: number; points: number } {
+  const random = new Random(424242);
+  let points = 0;
+  for (let i = 0; i < innings; i++) {
+    let g: Game = { ...newGame('threecushion', ['a', 'b'], { raceTo: 100000 }), shots: 1 };
+    const balls: { id: string; x: number; y: number }[] = [];
+    for (const id of ['white', 'yellow', 'red']) {
+      for (;;) {
+        const x = (random.uniform() - 0.5) * 2.6;
+        const y = (random.uniform() - 0.5) * 1.2;
+        if (balls.every((b) => (b.x - x) * (b.x - x) + (b.y - y) * (b.y - y) > 0.01)) {
+          balls.push({ id, x, y });
+          break;
+        }
+      }
+    }
+    g = { ...g, balls };
+    for (let n = 0; ; n++) {
+      const before = g.turn;
+      g = playShot(g, decide(g, level, 31 * i + n, timings)).game;
+      if (g.turn !== before) break;
+      points++;
+    }
+  }
+  return { innings, points };
+}
+
 /** Wins of `a` against `b` (and draws) over `games` races, the break alternating. */
 export function match(a: Player, b: Player, o: CaromBenchOptions, timings: CaromTiming[]): { wins: number; draws: number; games: number } {
   let wins = 0;
@@ -78,6 +107,13 @@ export function caromTables(o: CaromBenchOptions, timings: CaromTiming[] = []): 
   console.log('|---|---|---|---|');
   for (const level of levels) {
     const r = pointsPerInning(level, o.innings, timings);
+    console.log(`| ${level} | ${r.innings} | ${r.points} | ${(r.points / r.innings).toFixed(2)} |`);
+  }
+  console.log('\n## Three-cushion: points per inning from seeded random layouts (one inning each)\n');
+  console.log('| level | innings | points | points per inning |');
+  console.log('|---|---|---|---|');
+  for (const level of levels) {
+    const r = pointsFromLayouts(level, o.innings, timings);
     console.log(`| ${level} | ${r.innings} | ${r.points} | ${(r.points / r.innings).toFixed(2)} |`);
   }
   if (o.games > 0) {
