@@ -4,8 +4,6 @@
 import { cueBallId, legalTargets, type Game, type Point } from '../../rules/index.ts';
 import { detAtan2 } from '../../physics/index.ts';
 import type { Context } from '../context.ts';
-import { noisy } from '../noise.ts';
-import { Random } from '../random.ts';
 import type { Decision } from '../types.ts';
 import { isPoolBreak, isSnookerBreakOff, poolBreaks, snookerBreakOffs } from './breaks.ts';
 import { pots, potStrokes, safetyStrokes, type Candidate } from './candidates.ts';
@@ -14,12 +12,8 @@ import { placements } from './placement.ts';
 import { search } from './search.ts';
 import { positionSigma } from './value.ts';
 
-/**
- * The decision is the stroke as the computer's hand plays it: the search's choice with the level's
- * execution noise drawn from the decision's seed (the levels differ in the hand as well as the head).
- */
+/** The stroke the search chooses, as aimed (index.ts adds the hand's noise). */
 export function choosePocketShot(game: Game, ctx: Context): Decision {
-  const hand = new Random(Math.floor(ctx.random.uniform() * 0x100000000));
   const sigma = positionSigma(ctx.level.heading);
   const choice = takeChoice(game, sigma);
   if (choice) return { choice };
@@ -42,7 +36,7 @@ export function choosePocketShot(game: Game, ctx: Context): Decision {
   }
   const best = search(game, candidates, ctx);
   const pick = best ?? { shot: candidates[0]!.shot, candidate: candidates[0]! };
-  const shot = noisy(pick.shot, level, hand);
+  const shot = pick.shot;
   const cueBall = pick.candidate.cueBall;
   return cueBall ? { shot, cueBall } : { shot };
 }

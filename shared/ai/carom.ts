@@ -1,2 +1,0 @@
-// Three-cushion: see carom/index.ts (search over paths round the table by simulation).
-export { chooseCaromShot } from './carom/index.ts';
