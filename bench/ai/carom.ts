@@ -8,6 +8,7 @@ import { simulate } from '../../shared/physics/index.ts';
 import { newGame, playShot, type Game, type Shot, type ThreeCushionGame } from '../../shared/rules/index.ts';
 import { chooseShot, type Level } from '../../shared/ai/index.ts';
 import { Random } from '../../shared/ai/random.ts';
+import { deadline } from './options.ts';
 
 export interface CaromTiming {
   readonly level: number;
@@ -22,6 +23,8 @@ export interface CaromBenchOptions {
   readonly raceTo: number;
   /** Innings per player after which a game is a draw. */
   readonly inningsCap: number;
+  /** Seconds one table (a level's row) may take before it stops and says how many it played. */
+  readonly budget: number;
 }
 
 type Player = Level | 'sound';
@@ -37,11 +40,11 @@ function decide(g: Game, who: Player, seed: number, timings: CaromTiming[]): Sho
 }
 
 /** Points per inning of a level playing both sides from the opening position on. */
-export function pointsPerInning(level: Level, innings: number, timings: CaromTiming[]): { innings: number; points: number } {
+export function pointsPerInning(level: Level, innings: number, timings: CaromTiming[], over: () => boolean = () => false): { innings: number; points: number } {
   let g = newGame('threecushion', ['a', 'b'], { raceTo: 100000 });
   let points = 0;
   let played = 0;
-  for (let n = 0; played < innings; n++) {
+  for (let n = 0; played < innings && !over(); n++) {
     const before = g.turn;
     g = playShot(g, decide(g, level, 7919 * n + level, timings)).game;
     if (g.turn === before) points++;
@@ -51,10 +54,11 @@ export function pointsPerInning(level: Level, innings: number, timings: CaromTim
 }
 
 /** Points per inning from seeded random layouts: each inning starts from a fresh layout. */
-export function pointsFromLayouts(level: Level, innings: number, timings: CaromTiming[]): { innings: number; points: number } {
+export function pointsFromLayouts(level: Level, innings: number, timings: CaromTiming[], over: () => boolean = () => false): { innings: number; points: number } {
   const random = new Random(424242);
   let points = 0;
-  for (let i = 0; i < innings; i++) {
+  let played = 0;
+  for (let i = 0; i < innings && !over(); i++, played++) {
     let g: Game = { ...newGame('threecushion', ['a', 'b'], { raceTo: 100000 }), shots: 1 };
     const balls: { id: string; x: number; y: number }[] = [];
     for (const id of ['white', 'yellow', 'red']) {
@@ -75,14 +79,15 @@ export function pointsFromLayouts(level: Level, innings: number, timings: CaromT
       points++;
     }
   }
-  return { innings, points };
+  return { innings: played, points };
 }
 
 /** Wins of `a` against `b` (and draws) over `games` races, the break alternating. */
-export function match(a: Player, b: Player, o: CaromBenchOptions, timings: CaromTiming[]): { wins: number; draws: number; games: number } {
+export function match(a: Player, b: Player, o: CaromBenchOptions, timings: CaromTiming[], over: () => boolean = () => false): { wins: number; draws: number; games: number } {
   let wins = 0;
   let draws = 0;
-  for (let i = 0; i < o.games; i++) {
+  let played = 0;
+  for (let i = 0; i < o.games && !over(); i++, played++) {
     const players = i % 2 === 0 ? ['A', 'B'] : ['B', 'A'];
     let g = newGame('threecushion', players, { raceTo: o.raceTo, seed: i });
     for (let n = 0; g.winner === null && Math.max(...Object.values((g as ThreeCushionGame).innings)) <= o.inningsCap; n++) {
@@ -91,7 +96,7 @@ export function match(a: Player, b: Player, o: CaromBenchOptions, timings: Carom
     if (g.winner === 'A') wins++;
     else if (g.winner === null) draws++;
   }
-  return { wins, draws, games: o.games };
+  return { wins, draws, games: played };
 }
 
 function quantile(xs: readonly number[], q: number): number {
@@ -106,14 +111,14 @@ export function caromTables(o: CaromBenchOptions, timings: CaromTiming[] = []): 
   console.log('| level | innings | points | points per inning |');
   console.log('|---|---|---|---|');
   for (const level of levels) {
-    const r = pointsPerInning(level, o.innings, timings);
+    const r = pointsPerInning(level, o.innings, timings, deadline(o.budget));
     console.log(`| ${level} | ${r.innings} | ${r.points} | ${(r.points / r.innings).toFixed(2)} |`);
   }
   console.log('\n## Three-cushion: points per inning from seeded random layouts (one inning each)\n');
   console.log('| level | innings | points | points per inning |');
   console.log('|---|---|---|---|');
   for (const level of levels) {
-    const r = pointsFromLayouts(level, o.innings, timings);
+    const r = pointsFromLayouts(level, o.innings, timings, deadline(o.budget));
     console.log(`| ${level} | ${r.innings} | ${r.points} | ${(r.points / r.innings).toFixed(2)} |`);
   }
   if (o.games > 0) {
@@ -123,7 +128,7 @@ export function caromTables(o: CaromBenchOptions, timings: CaromTiming[] = []): 
     for (const level of levels) {
       const opponents: Player[] = level > 1 ? [(level - 1) as Level, 'sound'] : ['sound'];
       for (const opp of opponents) {
-        const r = match(level, opp, o, timings);
+        const r = match(level, opp, o, timings, deadline(o.budget));
         console.log(`| ${level} | ${opp === 'sound' ? 'bots "sound"' : `level ${opp}`} | ${r.games} | ${r.wins} | ${r.draws} | ${((100 * r.wins) / r.games).toFixed(0)}% |`);
       }
     }
@@ -152,6 +157,7 @@ function readArgs(argv: readonly string[]): CaromBenchOptions {
     levels: get('levels', '1,2,3,4,5').split(',').map(Number),
     raceTo: Number(get('race', '3')),
     inningsCap: Number(get('cap', '25')),
+    budget: Number(get('budget', '300')),
   };
 }
 

@@ -1,5 +1,5 @@
 // Options of bench:ai: --games N (games per pairing), --racks N (run-out racks), --frames N
-// (snooker break frames), --only pool,snooker,cost (sections), --levels 1,2,3,4,5, --budget S
+// (snooker break frames), --innings N (three-cushion innings), --only pool,snooker,carom,cost (sections), --levels 1,2,3,4,5, --budget S
 // (seconds per table before it stops early and says how many it played). Small defaults.
 export interface BenchOptions {
   readonly games: number;
@@ -9,6 +9,8 @@ export interface BenchOptions {
   readonly levels: readonly number[];
   readonly budget: number;
   readonly kinds: readonly string[];
+  /** Three-cushion innings per level (points per inning). */
+  readonly innings: number;
 }
 
 export function readOptions(argv: readonly string[]): BenchOptions {
@@ -26,10 +28,11 @@ export function readOptions(argv: readonly string[]): BenchOptions {
     games: num('games', 4),
     racks: num('racks', 10),
     frames: num('frames', 4),
-    only: list('only', 'pool,snooker,cost'),
+    only: list('only', 'pool,snooker,carom,cost'),
     levels: list('levels', '1,2,3,4,5').map(Number),
     budget: num('budget', 300),
     kinds: list('kinds', 'nineball,eightball'),
+    innings: num('innings', 20),
   };
 }
 
