@@ -74,57 +74,67 @@ async function playOut(me: Seat, room: string, concedeAfter = Infinity): Promise
 
 const shotsOf = (log: readonly ServerMessage[], match: number) => log.filter((m): m is ShotMsg => m.type === 'shot' && m.match === match);
 
+/** A game of `kind` against the computer, played out, and what it left: messages, record, ratings. */
+async function oneGame(url: string, kind: Kind, level: number, raceTo: number, concedeAfter: number): Promise<void> {
+  const me = await seat(url, `Person-${kind}`);
+  const room = await versus(me, kind, level, raceTo);
+  const computer = me.rooms.get(room)!.view!.players[1]!.id;
+  let moves = await playOut(me, room, concedeAfter);
+  if (moves === 0) {
+    // The person won before the computer's first turn (a run-out from the break): a rematch,
+    // which the computer breaks.
+    const first = me.rooms.get(room)!.view!.match!;
+    expect((await ask(me, { type: 'rematch', room })).type).toBe('room');
+    await until(me, room, (x) => x.status === 'playing' && x.view!.match !== first);
+    moves = await playOut(me, room, concedeAfter);
+  }
+  expect(moves).toBeGreaterThan(0);
+  const final = me.rooms.get(room)!;
+  expect(final.status).toBe('over');
+  const matchId = final.view!.match!;
+  // Nine-ball and eight-ball end by the rules; the others by the rules or the person's concession.
+  expect(final.view!.winner).toBe(final.game!.winner);
+  if (concedeAfter === Infinity) expect(final.game!.verdict!.loss).not.toBe('concession');
+  const shots = shotsOf(me.log, matchId);
+  const mine = me.log.filter((m): m is ShotMsg => m.type === 'shot' && m.shot.player === me.player.id).map(({ re: _re, ...m }) => m);
+  const its = shots.filter((m) => m.shot.player === computer);
+  // The computer's strokes: the same message as a person's, a stroke that passes the schema a
+  // person's shot passes, and no request id (nobody asked).
+  expect(its.length).toBeGreaterThan(0);
+  const form = (m: object) => Object.keys(m).filter((k) => k !== 'cueBall' && k !== 'deadline').sort();
+  for (const m of its) {
+    expect(form(m)).toEqual(form(mine[0]!));
+    expect(m.re).toBeUndefined();
+    const { player: _p, ...stroke } = m.shot;
+    expect(v.safeParse(ShotSchema, stroke).success).toBe(true);
+    expect(typeof m.outcome.hash).toBe('string');
+  }
+  // Recorded and replayable: the replay's hashes are the broadcast ones, its end the room's.
+  const record = (await get(`/api/matches/${matchId}`)) as MatchRecord & { result: unknown };
+  const replayed = replayMatch(record);
+  expect(replayed.shots.map((x) => x.hash)).toEqual(shots.map((m) => m.outcome.hash));
+  expect(replayed.game).toEqual(final.game);
+  // Never rated, for either player.
+  expect(record.result).toMatchObject({ rated: false, unrated: 'computer' });
+  expect(final.view).toMatchObject({ rated: false, unrated: 'matches against the computer are never rated' });
+  expect((await get(`/api/players/${me.player.id}`)).ratings).toEqual({});
+  expect((await get(`/api/players/${computer}`)).ratings).toEqual({});
+}
+
 describe('playing the computer', () => {
-  it.each([
-    ['nineball', 3, 1, Infinity],
-    ['eightball', 2, 1, Infinity],
-    ['snooker', 1, 1, 4],
-    ['threecushion', 5, 1, 4],
-  ] as const)('a game of %s against level %i over real sockets: same messages, recorded, replayable, unrated', async (kind, level, raceTo, concedeAfter) => {
+  // One server, the four games at once: the computer waits for each shot's balls to stop, so the
+  // games spend most of their time waiting, and side by side the test takes the longest one's.
+  it('a game of each kind against the computer over real sockets: same messages, recorded, replayable, unrated', async () => {
     const url = await start({ BAIZE_RATED_MIN_PLAY_S: '0' });
-    const me = await seat(url, `Person-${kind}`);
-    const room = await versus(me, kind, level, raceTo);
-    const computer = me.rooms.get(room)!.view!.players[1]!.id;
-    let moves = await playOut(me, room, concedeAfter);
-    if (moves === 0) {
-      // The person won before the computer's first turn (a run-out from the break): a rematch,
-      // which the computer breaks.
-      const first = me.rooms.get(room)!.view!.match!;
-      expect((await ask(me, { type: 'rematch', room })).type).toBe('room');
-      await until(me, room, (x) => x.status === 'playing' && x.view!.match !== first);
-      moves = await playOut(me, room, concedeAfter);
-    }
-    expect(moves).toBeGreaterThan(0);
-    const final = me.rooms.get(room)!;
-    expect(final.status).toBe('over');
-    const matchId = final.view!.match!;
-    // Nine-ball and eight-ball end by the rules; the others by the rules or the person's concession.
-    expect(final.view!.winner).toBe(final.game!.winner);
-    if (concedeAfter === Infinity) expect(final.game!.verdict!.loss).not.toBe('concession');
-    const shots = shotsOf(me.log, matchId);
-    const mine = me.log.filter((m): m is ShotMsg => m.type === 'shot' && m.shot.player === me.player.id).map(({ re: _re, ...m }) => m);
-    const its = shots.filter((m) => m.shot.player === computer);
-    // The computer's strokes: the same message as a person's, a stroke that passes the schema a
-    // person's shot passes, and no request id (nobody asked).
-    expect(its.length).toBeGreaterThan(0);
-    const form = (m: object) => Object.keys(m).filter((k) => k !== 'cueBall' && k !== 'deadline').sort();
-    for (const m of its) {
-      expect(form(m)).toEqual(form(mine[0]!));
-      expect(m.re).toBeUndefined();
-      const { player: _p, ...stroke } = m.shot;
-      expect(v.safeParse(ShotSchema, stroke).success).toBe(true);
-      expect(typeof m.outcome.hash).toBe('string');
-    }
-    // Recorded and replayable: the replay's hashes are the broadcast ones, its end the room's.
-    const record = (await get(`/api/matches/${matchId}`)) as MatchRecord & { result: unknown };
-    const replayed = replayMatch(record);
-    expect(replayed.shots.map((x) => x.hash)).toEqual(shots.map((m) => m.outcome.hash));
-    expect(replayed.game).toEqual(final.game);
-    // Never rated, for either player.
-    expect(record.result).toMatchObject({ rated: false, unrated: 'computer' });
-    expect(final.view).toMatchObject({ rated: false, unrated: 'matches against the computer are never rated' });
-    expect((await get(`/api/players/${me.player.id}`)).ratings).toEqual({});
-    expect((await get(`/api/players/${computer}`)).ratings).toEqual({});
+    const games = [
+      ['nineball', 3, 1, Infinity],
+      ['eightball', 2, 1, Infinity],
+      ['snooker', 1, 1, 4],
+      ['threecushion', 5, 1, 4],
+    ] as const;
+    await Promise.all(games.map(([kind, level, raceTo, concedeAfter]) => oneGame(url, kind, level, raceTo, concedeAfter).catch((e: Error) => {
+      throw new Error(`${kind} against level ${level}: ${e.message}`);
+    })));
   }, 300_000);
 
   it('waits at least 0.8 s after the balls stop by default, plays a rematch, and ends when the person leaves', async () => {
