@@ -1,5 +1,5 @@
 // A small pool of worker threads where the computer thinks, so that a search of thousands of
-// simulations never runs on the event loop. The worker is bundled by esbuild once at start (Node's
+// simulations never runs on the event loop. The worker is bundled by esbuild on the first task (Node's
 // workers do not inherit tsx's loader), which works alike under `node --import tsx` and npm start.
 // A task that runs past its budget has its worker terminated (and replaced) and is rejected; so is
 // a task whose worker crashes. Callers play a fallback then.
@@ -64,16 +64,21 @@ export class ComputerPool implements Thinker {
   private nextId = 1;
   private closed = false;
   private readonly log: (line: string) => void;
-  private readonly ready: Promise<string>;
+  private started = false;
   private file: string | undefined;
 
   constructor(private readonly options: PoolOptions) {
     this.log = options.log ?? ((line) => console.error(line));
-    this.ready = bundleWorker();
-    this.ready.then(
+  }
+
+  /** Builds the worker and starts the threads on the first task: a server nobody plays the computer on keeps neither. */
+  private start(): void {
+    if (this.started) return;
+    this.started = true;
+    bundleWorker().then(
       (file) => {
         this.file = file;
-        for (let i = 0; i < options.size && !this.closed; i++) this.slots.push(this.spawn());
+        for (let i = 0; i < this.options.size && !this.closed; i++) this.slots.push(this.spawn());
         this.pump();
       },
       (err: unknown) => {
@@ -90,6 +95,7 @@ export class ComputerPool implements Thinker {
 
   think(task: ThinkTask): Promise<Decision> {
     if (this.closed) return Promise.reject(new Error('the pool is closed'));
+    this.start();
     return new Promise<Decision>((resolve, reject) => {
       this.queue.push({ id: this.nextId++, task, resolve, reject });
       this.pump();
