@@ -1,7 +1,8 @@
 // npm run bench:sim — the table simulation's speed against a fixed-step yardstick, and what each
 // accuracy setting costs and saves. Prints markdown tables; asserts nothing.
 import { simulate, type Outcome, type SimOptions } from '../shared/physics/index.ts';
-import { corpusCases, type CorpusCase, type CorpusTag } from '../shared/scenes/index.ts';
+import { corpusCases, randomShots, type CorpusCase, type CorpusTag } from '../shared/scenes/index.ts';
+import { simulate as simulateBefore28 } from './baseline/simulate-before-28.js';
 import { simulateFixedStep } from './fixed-step.ts';
 import { fmt, median, medianMs } from './timing.ts';
 
@@ -57,6 +58,44 @@ for (const [label, tag] of GROUPS) {
   }
   const ratio = median(fixedPerSecond) / median(perSecond);
   console.log(`| ${label} | ${cases.length} | ${fmt(median(ms))} | ${fmt(median(events))} | ${fmt(median(durations))} | ${fmt(median(perSecond))} | ${fmt(median(fixedPerSecond))} | ${fmt(ratio)}x cheaper |`);
+}
+
+console.log('\n## Against the simulation before issue 28, side by side\n');
+console.log('The same scenes and table constants through today\'s simulate and the bundle of 1fe2acb (bench/baseline), timed alternately in this process. "time vs before" is the median over the scenes of today\'s time over the old one\'s; "total" the ratio of the summed times.\n');
+console.log('| scenes | n | median ms/shot today | before | events/shot today | before | time vs before (median) | total |');
+console.log('|---|---|---|---|---|---|---|---|');
+const SIDE_BY_SIDE: readonly [string, readonly CorpusCase[]][] = [
+  ...GROUPS.map(([label, tag]): [string, readonly CorpusCase[]] => [label, corpusCases(tag)]),
+  ['random pool shots', randomShots('pool-9ft', 40)],
+  ['random snooker shots', randomShots('snooker-12ft', 40)],
+  ['random carom shots', randomShots('carom-match', 40)],
+];
+for (const [label, group] of SIDE_BY_SIDE) {
+  const cases = runnable(group).filter((c) => {
+    try {
+      simulateBefore28(c.scene, c.shot);
+      return true;
+    } catch {
+      return false;
+    }
+  });
+  if (cases.length === 0) continue;
+  const now: number[] = [];
+  const before: number[] = [];
+  const ratios: number[] = [];
+  const eventsNow: number[] = [];
+  const eventsBefore: number[] = [];
+  for (const c of cases) {
+    const b = medianMs(() => simulateBefore28(c.scene, c.shot), 5, 10);
+    const a = medianMs(() => simulate(c.scene, c.shot), 5, 10);
+    now.push(a);
+    before.push(b);
+    ratios.push(a / b);
+    eventsNow.push(simulate(c.scene, c.shot).events.length);
+    eventsBefore.push(simulateBefore28(c.scene, c.shot).events.length);
+  }
+  const sum = (xs: number[]): number => xs.reduce((x, y) => x + y, 0);
+  console.log(`| ${label} | ${cases.length} | ${fmt(median(now))} | ${fmt(median(before))} | ${fmt(median(eventsNow))} | ${fmt(median(eventsBefore))} | ${fmt(median(ratios))}x | ${fmt(sum(now) / sum(before))}x |`);
 }
 
 console.log('\n## Accuracy settings: time saved and final-position error against the tightest setting\n');
