@@ -143,3 +143,29 @@ export function safetyStrokes(game: Game, cue: Point, count: number, cueBall?: P
   }
   return out;
 }
+
+/** Headings of a push-out's roll, in eighths of a turn from each legal ball's line. */
+const PUSH_TURNS = [0, 0.25, -0.25, 0.5, -0.5, 1, -1, 1.5, -1.5, 2];
+const PUSH_SPEEDS = [0.6, 1.1];
+
+/**
+ * Nine-ball push-outs (WPA 2.4), on the shot right after the break: soft rolls that need hit
+ * nothing, fanned about the line to the lowest ball, for a position the opponent must take or
+ * hand back (value.ts weighs both answers).
+ */
+export function pushOutStrokes(game: Game, cue: Point, count: number, cueBall?: Point): Candidate[] {
+  if (game.kind !== 'nineball' || game.phase !== 'push-out' || count === 0) return [];
+  const lowest = legalTargets(game)
+    .map((id) => game.balls.find((b) => b.id === id))
+    .find((b): b is Ball => b !== undefined);
+  const base = lowest ? detAtan2(lowest.y - cue.y, lowest.x - cue.x) : 0;
+  const out: Candidate[] = [];
+  for (const speed of PUSH_SPEEDS) {
+    for (const turn of PUSH_TURNS) {
+      if (out.length >= count) return out;
+      const heading = base + (turn * Math.PI) / 4;
+      out.push({ shot: { player: game.turn, ball: cueBallId(game), heading, speed, side: 0, top: 0, pushOut: true }, cueBall, prior: 0 });
+    }
+  }
+  return out;
+}

@@ -6,7 +6,7 @@ import { detAtan2 } from '../../physics/index.ts';
 import type { Context } from '../context.ts';
 import type { Decision } from '../types.ts';
 import { isPoolBreak, isSnookerBreakOff, poolBreaks, snookerBreakOffs } from './breaks.ts';
-import { pots, potStrokes, safetyStrokes, type Candidate } from './candidates.ts';
+import { pots, potStrokes, pushOutStrokes, safetyStrokes, type Candidate } from './candidates.ts';
 import { takeChoice } from './choices.ts';
 import { placements } from './placement.ts';
 import { search } from './search.ts';
@@ -15,7 +15,7 @@ import { positionSigma } from './value.ts';
 /** The stroke the search chooses, as aimed (index.ts adds the hand's noise). */
 export function choosePocketShot(game: Game, ctx: Context): Decision {
   const sigma = positionSigma(ctx.level.heading);
-  const choice = takeChoice(game, sigma);
+  const choice = takeChoice(game, sigma, ctx.level.heading);
   if (choice) return { choice };
   const level = ctx.level;
   const candidates: Candidate[] = [];
@@ -31,6 +31,7 @@ export function choosePocketShot(game: Game, ctx: Context): Decision {
       const cue = cueBall ?? here;
       for (const pot of pots(game, cue, rankSigma, level.banks).slice(0, level.pots)) candidates.push(...potStrokes(game, pot, cue, level.variants, cueBall));
       if (i < 2) candidates.push(...safetyStrokes(game, cue, level.safeties, cueBall));
+      if (i === 0) candidates.push(...pushOutStrokes(game, cue, Math.ceil(level.safeties / 2), cueBall));
     });
     if (candidates.length === 0) candidates.push(...fallback(game, places[0], here));
   }

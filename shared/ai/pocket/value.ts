@@ -36,6 +36,11 @@ function winChance(game: Game, p: number, q: number): number {
   return run + (1 - run) * 0.4;
 }
 
+/** The chance that the player on turn wins the rack from here (nine-ball's push-out answer). */
+export function shooterWinChance(game: Game, sigma: number, heading: number): number {
+  return winChance(game, bestChance(game, sigma), perBall(heading));
+}
+
 /** Without lookahead (the lowest levels) the next shot's chance is not weighed: they pot and hope. */
 export function value(before: Game, after: Game, sigma: number, lookahead = true, heading = sigma): number {
   const me = before.turn;
@@ -45,6 +50,8 @@ export function value(before: Game, after: Game, sigma: number, lookahead = true
   const p = lookahead || !mine ? bestChance(after, sigma) : 0.5;
   if (before.kind !== 'snooker') {
     const w = winChance(after, p, perBall(heading));
+    // After a push-out the opponent shoots or hands the shot back, whichever is worse for me.
+    if (after.choices.includes('pass')) return WIN * Math.min(w, 1 - w);
     return WIN * (mine ? w : 1 - w) - (v?.foul ? 1 : 0);
   }
   let points = 0;

@@ -1,5 +1,5 @@
 // The computer declares what the rules ask: eight-ball's called pocket for the 8, snooker's
-// nominated colour after a red; and the referee accepts the stroke.
+// nominated colour after a red, nine-ball's push-out; and the referee accepts the stroke.
 import { describe, expect, it } from 'vitest';
 import { chooseShot } from '../../../shared/ai/index.ts';
 import { newGame, type Game } from '../../../shared/rules/index.ts';
@@ -30,6 +30,31 @@ describe('declarations', () => {
       if (!('shot' in d)) throw new Error('expected a stroke');
       expect(['yellow', 'green', 'brown', 'blue', 'pink', 'black']).toContain(d.shot.nominated);
       expect(() => apply(game, d)).not.toThrow();
+    }
+  });
+
+  it('nine-ball: pushes out when the break leaves nothing on, and answers a push-out', () => {
+    // After the break, the cue ball in a corner behind a wall of balls, the 1 at the far end.
+    const g0 = newGame('nineball', ['a', 'b'], { seed: 5 });
+    const wall = ['2', '3', '4', '5', '6', '7', '8'];
+    const balls = g0.balls.map((b) => {
+      if (b.id === 'cue') return { ...b, x: -1.15, y: -0.5 };
+      if (b.id === '1') return { ...b, x: 1.1, y: 0.52 };
+      if (b.id === '9') return { ...b, x: 0.9, y: -0.3 };
+      const i = wall.indexOf(b.id);
+      return { ...b, x: -1.0 + 0.062 * (i % 4), y: -0.42 + 0.062 * Math.floor(i / 4) + (i % 4 === 3 ? -0.06 : 0) };
+    });
+    const game = { ...g0, balls, turn: 'b', phase: 'push-out', ballInHand: false, choices: [], verdict: null } as Game;
+    for (const level of [4, 5] as const) {
+      const d = chooseShot(game, { level, seed: 3 });
+      if (!('shot' in d)) throw new Error('expected a stroke');
+      expect(d.shot.pushOut).toBe(true);
+      const after = apply(game, d);
+      expect(after.choices).toContain('pass');
+      // The other side answers with the choice or a stroke; either is legal.
+      const reply = chooseShot(after, { level, seed: 4 });
+      if ('choice' in reply) expect(reply.choice).toBe('pass');
+      else expect(() => apply(after, reply)).not.toThrow();
     }
   });
 });
