@@ -6,8 +6,6 @@
 import {
   cueBallId,
   decide,
-  legalTargets,
-  POCKETS,
   newGame,
   placeBall,
   playShot,
@@ -31,8 +29,9 @@ import { Pace } from '../table/pace.ts';
 import { SoundPlayer, soundToggle } from '../table/sound.ts';
 import { Tray } from '../table/tray.ts';
 import { TableView } from '../table/view.ts';
-import { POCKET_NAMES, verdictSentence } from '../verdict.ts';
+import { verdictSentence } from '../verdict.ts';
 import { ComputerMind, preloadComputer } from '../computer/mind.ts';
+import { Declarations } from '../room/declarations.ts';
 import type { Decision, Level } from '../../shared/ai/index.ts';
 
 const ME = 'me';
@@ -56,10 +55,9 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
   const versusKind = h('select', { 'aria-label': 'Game' }, ...VERSUS_KINDS.map((k) => h('option', { value: k }, KIND_NAMES[k])));
   const level = h('select', { 'aria-label': 'Level' }, ...[1, 2, 3, 4, 5].map((n) => h('option', { value: String(n) }, `Level ${n}`)));
   level.value = '3';
-  // Against the computer at eight-ball: the pocket called for the 8, as in a room.
-  const called = h('select', { 'aria-label': 'Called pocket' }, h('option', { value: '' }, 'choose a pocket'), ...POCKETS.map((p) => h('option', { value: p }, POCKET_NAMES[p] ?? p)));
-  const calling = h('label', { hidden: true }, 'Called pocket for the 8 ', called);
-  const onTheEight = () => versus !== null && game.kind === 'eightball' && game.groups !== null && game.turn === ME && legalTargets(game).includes('8');
+  // Against the computer: the room's declarations and choices (push-out, the 8's pocket, snooker's
+  // nomination, pass or re-rack), made by the player as in a room.
+  const declarations = new Declarations();
   const versusButton = h('button', { type: 'button', onclick: () => ((mode.value = 'computer'), reset()) }, 'Play the computer');
   // The computer's worker script is fetched now, so that it can be played with the network off.
   void preloadComputer().then(
@@ -83,7 +81,8 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
       { className: 'practice', 'aria-label': 'Practice' },
       h('h2', {}, 'Practice'),
       h('p', {}, mode, ' ', layout, ' ', runKind, ' ', start, ' ', h('label', {}, placing, ' Place balls')),
-      h('p', {}, versusKind, ' ', h('label', {}, 'Level ', level), ' ', versusButton, ' ', calling),
+      h('p', {}, versusKind, ' ', h('label', {}, 'Level ', level), ' ', versusButton),
+      declarations.element,
       tableBox,
       tray.element,
       h('p', {}, undoButton, ' ', replayButton, ' ', submit),
@@ -143,7 +142,7 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
     runKind.hidden = mode.value !== 'run';
     submit.hidden = mode.value !== 'run';
     undoButton.hidden = mode.value !== 'free';
-    calling.hidden = !onTheEight();
+    declarations.update(versus ? game : null, !busy && game.winner === null && game.turn === ME, (choice) => humanChoice(choice));
     submit.disabled = !run || !run.issued || run.submitted || run.shots.length === 0;
   };
 
@@ -192,8 +191,12 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
   function shoot(): void {
     if (busy || waiting || run?.submitted || (placing.checked && !versus) || game.winner !== null || game.turn !== ME || !aim) return;
     const s = aim.state;
-    const shot: PracticeShot['shot'] & { calledPocket?: (typeof POCKETS)[number] } = { ball: cueBallId(game), heading: s.heading, speed: s.speed, side: s.side, top: s.top };
-    if (onTheEight() && called.value) shot.calledPocket = called.value as (typeof POCKETS)[number];
+    const stroke: PracticeShot['shot'] = { ball: cueBallId(game), heading: s.heading, speed: s.speed, side: s.side, top: s.top };
+    if (versus && declarations.missingCall(game)) {
+      info.textContent = 'Call a pocket for the 8 first.';
+      return;
+    }
+    const shot = versus ? declarations.declare(game, stroke) : stroke;
     let played;
     try {
       played = playShot(game, { ...shot, player: ME }, s.cueBall);
@@ -208,7 +211,7 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
     controls?.enable(false);
     const v = played.game.verdict!;
     if (run) {
-      run.shots.push({ shot, ...(s.cueBall ? { cueBall: s.cueBall } : {}) });
+      run.shots.push({ shot: stroke, ...(s.cueBall ? { cueBall: s.cueBall } : {}) });
       if (!v.foul) run.score += run.kind === 'nineball' ? v.potted.length : (v.points[ME] ?? 0);
     }
     void pace.play(played.outcome).then(() => {
@@ -221,6 +224,20 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
       refresh();
       computerTurn();
     });
+  }
+
+  /** The player's answer to a choice the rules offer (pass, re-rack), then the computer's turn if it is on. */
+  function humanChoice(choice: Game['choices'][number]): void {
+    if (busy || !versus || game.turn !== ME) return;
+    try {
+      game = decide(game, ME, choice);
+    } catch (err) {
+      info.textContent = (err as Error).message;
+      return;
+    }
+    info.textContent = verdictSentence(game, game.verdict!, nameOf, { me: ME });
+    refresh();
+    computerTurn();
   }
 
   const versusEnd = () => (versus && game.winner !== null ? (game.winner === ME ? ' You win.' : ' The computer wins.') : '');
