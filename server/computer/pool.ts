@@ -4,9 +4,6 @@
 // A task that runs past its budget has its worker terminated (and replaced) and is rejected; so is
 // a task whose worker crashes. Callers play a fallback then.
 import { build } from 'esbuild';
-import { mkdtempSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { Worker } from 'node:worker_threads';
 import type { Decision, Level } from '../../shared/ai/index.ts';
@@ -49,13 +46,13 @@ interface Slot {
 const RESPAWN_MS = 1000;
 const WORKER_SOURCE = fileURLToPath(new URL('./worker.ts', import.meta.url));
 
-/** Bundles the worker into a temporary .mjs, removed when the process exits. */
-async function bundleWorker(): Promise<string> {
-  const dir = mkdtempSync(join(tmpdir(), 'baize-computer-'));
-  const outfile = join(dir, 'worker.mjs');
-  process.once('exit', () => rmSync(dir, { recursive: true, force: true }));
-  await build({ entryPoints: [WORKER_SOURCE], outfile, bundle: true, platform: 'node', format: 'esm', target: 'node20', packages: 'external', logLevel: 'warning' });
-  return outfile;
+/**
+ * Bundles the worker in memory, as a data: URL the threads start from: no file is left behind,
+ * even by a killed process. (The worker imports nothing but Node's built-ins and shared/.)
+ */
+async function bundleWorker(): Promise<URL> {
+  const out = await build({ entryPoints: [WORKER_SOURCE], write: false, bundle: true, platform: 'node', format: 'esm', target: 'node20', packages: 'external', logLevel: 'warning' });
+  return new URL(`data:text/javascript;base64,${Buffer.from(out.outputFiles[0]!.contents).toString('base64')}`);
 }
 
 export class ComputerPool implements Thinker {
@@ -65,7 +62,7 @@ export class ComputerPool implements Thinker {
   private closed = false;
   private readonly log: (line: string) => void;
   private started = false;
-  private file: string | undefined;
+  private file: URL | undefined;
 
   constructor(private readonly options: PoolOptions) {
     this.log = options.log ?? ((line) => console.error(line));

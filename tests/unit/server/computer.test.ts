@@ -1,7 +1,9 @@
 // The computer on the server, piece by piece: the pause's default, the worker pool (the same
-// decision as chooseShot in-process, a budget that gives up), the fallback stroke (legal), the
+// decision as chooseShot in-process, no file left behind, a budget that gives up), the fallback stroke (legal), the
 // seed (deterministic), and the service playing a fallback when the thinker fails.
 import fc from 'fast-check';
+import { readdirSync } from 'node:fs';
+import { tmpdir } from 'node:os';
 import { afterEach, describe, expect, it } from 'vitest';
 import { COMPUTER_PAUSE_MS, readConfig } from '../../../server/config.ts';
 import { ComputerPool } from '../../../server/computer/pool.ts';
@@ -35,10 +37,14 @@ describe('the computer on the server', () => {
   });
 
   it('thinks in worker threads to the same decision as chooseShot in-process, and gives up past its budget', async () => {
+    const temporary = () => readdirSync(tmpdir()).filter((f) => f.startsWith('baize-computer-')).sort();
+    const before = temporary();
     pool = new ComputerPool({ size: 2, budgetMs: 20_000, log: () => {} });
     const games = KINDS.map((k) => newGame(k, ['a', 'b'], { seed: 5 }));
     const decisions = await Promise.all(games.map((game) => pool!.think({ game, level: 1, seed: 9 })));
     expect(decisions).toEqual(games.map((game) => JSON.parse(JSON.stringify(chooseShot(game, { level: 1, seed: 9 })))));
+    // The worker's bundle is held in memory: a process killed now leaves no file behind.
+    expect(temporary()).toEqual(before);
     await pool.close();
     const logged: string[] = [];
     pool = new ComputerPool({ size: 1, budgetMs: 1, log: (l) => logged.push(l) });
