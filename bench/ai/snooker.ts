@@ -75,5 +75,5 @@ export function snookerTables(o: BenchOptions, timings: Timing[]): void {
     const mean = (xs: number[]): string => (xs.length ? (xs.reduce((a, b) => a + b, 0) / xs.length).toFixed(1) : '-');
     console.log(`| ${l} | ${mean(highs)} | ${highs.length ? Math.max(...highs) : '-'} | ${mean(scoring)} | ${highs.length} |`);
   }
-  strengthTable('snooker', { ...o, games: Math.max(1, Math.min(o.games, o.frames)) }, timings, 600);
+  strengthTable('snooker', o, timings, 600);
 }
