@@ -24,44 +24,92 @@ export const STICK = 1;
 export type ContactMode = typeof SLIDE | typeof STICK;
 
 /**
- * The friction model with its per-impact constants and each contact's mode. Number fields start
- * at -0 or a fraction so that V8 keeps them as doubles.
+ * One contact's friction state: I, the ball on the cushion's nose, or C, the ball on the cloth.
+ * Number fields start at -0 or a fraction so that V8 keeps them as doubles.
  */
+export class Contact {
+  mode: ContactMode = SLIDE;
+  /** Slip left when the contact was declared rolling; a slipping contact's direction is (slip - offset). */
+  offX = -0;
+  offY = -0;
+  /** Slaved (quasi-static) slip: it takes the direction its rates enforce (the hint), not its own. */
+  slaved = false;
+  /** A slaved slip whose rates vanish along it: its direction is held, not re-solved. */
+  held = false;
+  /** Direction of a slaved contact, or of one whose slip is below epsSlip (its onset). */
+  hintX = 1.5;
+  hintY = -0;
+  /** Slip direction at the step's start, and the smallest slip component along it met in the step. */
+  refX = -0;
+  refY = -0;
+  minDot = -0;
+  /**
+   * The slip as a function of the state (eqs. 12, 13): x = vx + ax Oy - bx Oz, y = ay vy + Ox.
+   * I: ax = s, bx = c, ay = -s; C: ax = -1, bx = 0, ay = 1.
+   */
+  private ax = -0;
+  private bx = -0;
+  private ay = -0;
+  /** The contact's friction coefficient: μw at I, μs at C. */
+  mu = -0;
+
+  reset(ax: number, bx: number, ay: number, mu: number): void {
+    this.mu = mu;
+    this.ax = ax;
+    this.bx = bx;
+    this.ay = ay;
+    this.mode = SLIDE;
+    this.offX = this.offY = 0;
+    this.hintX = 1;
+    this.hintY = 0;
+    this.slaved = this.held = false;
+  }
+
+  /** The slip at y (eqs. 12, 13). */
+  rawX(y: Float64Array): number { return y[0]! + this.ax * y[3]! - this.bx * y[4]!; }
+  rawY(y: Float64Array): number { return this.ay * y[1]! + y[2]!; }
+
+  /** Its slip at y becomes its offset: the slip is zero there (a rolling spell's start or end). */
+  zeroAt(y: Float64Array): void {
+    this.offX = this.rawX(y);
+    this.offY = this.rawY(y);
+  }
+
+  /** The effective slip (slip minus offset) at y, and its rates from a derivative k. */
+  slipX(y: Float64Array): number { return this.rawX(y) - this.offX; }
+  slipY(y: Float64Array): number { return this.rawY(y) - this.offY; }
+  rateX(k: Float64Array): number { return k[0]! + this.ax * k[3]! - this.bx * k[4]!; }
+  rateY(k: Float64Array): number { return this.ay * k[1]! + k[2]!; }
+
+  /** Sets the slaved and held flags and the hint. */
+  slave(slaved: boolean, held: boolean, ux: number, uy: number): void {
+    this.slaved = slaved;
+    this.held = held;
+    this.hintX = ux;
+    this.hintY = uy;
+  }
+}
+
+/** The friction model with its per-impact constants and its two contacts. */
 export class CushionModel {
   s = -0;
   c = -0;
   muW = -0;
   muS = -0;
-  /** (2/7)(1 - 5/2 s), (2/7) c, (2/7)(5/2 - s): the rolling-condition coefficients. */
+  /** (2/7)(1 - 5/2 s), (2/7) c, (2/7)(5/2 - s): eq. 15b's coefficients (rollingC). */
   q1 = -0;
   q2 = -0;
   q3 = -0;
-  modeI: ContactMode = SLIDE;
-  modeC: ContactMode = SLIDE;
-  /** Slip left when a contact was declared stuck; a slipping contact's direction is (slip - offset). */
-  offIx = -0;
-  offIy = -0;
-  offCx = -0;
-  offCy = -0;
-  /** Slaved (quasi-static) slip: the direction its rates enforce (the hint), not its own. */
-  qsI = false;
-  qsC = false;
-  /** A slaved slip whose rates vanish along it: its direction is held, not re-solved. */
-  frozenI = false;
-  frozenC = false;
-  /** Direction of a slaved contact, or of one whose slip is below epsSlip (its onset). */
-  hintIx = 1.5;
-  hintIy = -0;
-  hintCx = 1.5;
-  hintCy = -0;
+  /** I's slip rates with C rolling, a + B g (eq. 15b in I's rates): a = (0, ra), B = diag(rb1, rb2). */
+  ra = -0;
+  rb1 = -0;
+  rb2 = -0;
+  /** The cushion contact I and the table contact C. */
+  readonly I = new Contact();
+  readonly C = new Contact();
+  /** Both, I first: the order every loop over them keeps. */
+  readonly contacts: readonly [Contact, Contact] = [this.I, this.C];
   epsSlip = -0;
-  /** Slip directions at the step's start, and the smallest slip component along them met in the step. */
-  refIx = -0;
-  refIy = -0;
-  refCx = -0;
-  refCy = -0;
-  minDotI = -0;
-  minDotC = -0;
   /** Inside a step: a slip past its zero keeps the step's starting direction (the step is then cut). */
   stepping = false;
   /** Frictions and table normal of the last evaluation. */
@@ -82,25 +130,49 @@ export class CushionModel {
     this.q1 = (2 / 7) * (1 - 2.5 * s);
     this.q2 = (2 / 7) * c;
     this.q3 = (2 / 7) * (2.5 - s);
-    this.modeI = this.modeC = SLIDE;
-    this.offIx = this.offIy = this.offCx = this.offCy = 0;
-    this.hintIx = this.hintCx = 1;
-    this.hintIy = this.hintCy = 0;
-    this.qsI = this.qsC = this.frozenI = this.frozenC = false;
+    this.ra = (5 / 7) * (1 + s) * c;
+    this.rb1 = 3.5 - (2 / 7) * (1 - 2.5 * s) * (1 - 2.5 * s);
+    this.rb2 = s * s + 2.5 - (2 / 7) * (2.5 - s) * (2.5 - s);
+    this.I.reset(s, c, -s, muW);
+    this.C.reset(-1, 0, 1, muS);
   }
 
-  /** Effective slips (slip minus offset) at y, and their rates from a derivative k. */
-  slipIx(y: Float64Array): number { return y[0]! + this.s * y[3]! - this.c * y[4]! - this.offIx; }
-  slipIy(y: Float64Array): number { return -this.s * y[1]! + y[2]! - this.offIy; }
-  slipCx(y: Float64Array): number { return y[0]! - y[3]! - this.offCx; }
-  slipCy(y: Float64Array): number { return y[1]! + y[2]! - this.offCy; }
-  rateIx(k: Float64Array): number { return k[0]! + this.s * k[3]! - this.c * k[4]!; }
-  rateIy(k: Float64Array): number { return -this.s * k[1]! + k[2]!; }
-  rateCx(k: Float64Array): number { return k[0]! - k[3]!; }
-  rateCy(k: Float64Array): number { return k[1]! + k[2]!; }
+  /** The table's normal impulse per unit impulse at I, A = s - c gy, clamped at 0 (it never pulls). */
+  private tableNormal(gy: number): number {
+    const n = this.s - this.c * gy;
+    return n < 0 ? 0 : n;
+  }
 
-  /** Frictions g, h and the table normal nC at state (vx, vy, Ox, Oy, Oz) in the current modes. */
-  friction(vx: number, vy: number, ox: number, oy: number, oz: number): void {
+  /** Eq. 15b: the friction at C that keeps C rolling, for the friction g at I, into (hx, hy). */
+  private rollingC(gx: number, gy: number): void {
+    this.hx = -this.q1 * gx;
+    this.hy = this.q2 - this.q3 * gy;
+  }
+
+  /**
+   * Eq. 15a with C slipping along (0, fy)'s y part: gy that keeps I rolling, with
+   * h = -μs (s - c gy) u_C; the denominator is returned in `den` (the branch needs it positive).
+   */
+  private rollingIgy(fy: number): number {
+    const s = this.s;
+    const k = (2.5 - s) * this.muS * fy;
+    this.den = s * s + 2.5 + k * this.c;
+    return (k * s - s * this.c) / this.den;
+  }
+
+  private den = -0;
+
+  /** C's slip rates without its own friction, (dxC/dp, dyC/dp) at h = 0 (its rates are that + 7/2 h), into (cax, cay). */
+  private cRatesFree(gx: number, gy: number): void {
+    this.cax = (1 - 2.5 * this.s) * gx;
+    this.cay = -this.c + (2.5 - this.s) * gy;
+  }
+
+  private cax = -0;
+  private cay = -0;
+
+  /** Frictions g, h and the table normal nC at the state y in the current modes. */
+  friction(y: Float64Array): void {
     const s = this.s;
     const c = this.c;
     let gx: number;
@@ -108,60 +180,60 @@ export class CushionModel {
     let hx: number;
     let hy: number;
     let n: number;
-    if (this.modeI === SLIDE) {
-      if (this.qsI) {
-        if (!this.frozenI && (!this.qsC || this.modeC === STICK)) {
+    if (this.I.mode === SLIDE) {
+      if (this.I.slaved) {
+        if (!this.I.held && (!this.C.slaved || this.C.mode === STICK)) {
           // Slaved: the direction I's rates enforce at this very state.
-          this.affineAt(vx, vy, ox, oy);
+          this.affineAt(y);
           this.onsetDirection(this.ax, this.ay, this.b11, this.b12, this.b22, true);
-          this.hintIx = this.ux;
-          this.hintIy = this.uy;
+          this.I.hintX = this.ux;
+          this.I.hintY = this.uy;
         }
-        gx = -this.muW * this.hintIx;
-        gy = -this.muW * this.hintIy;
+        gx = -this.muW * this.I.hintX;
+        gy = -this.muW * this.I.hintY;
       } else {
-        this.direction(0, vx + s * oy - c * oz - this.offIx, -s * vy + ox - this.offIy);
+        this.direction(this.I, this.I.slipX(y), this.I.slipY(y));
         gx = -this.muW * this.ux;
         gy = -this.muW * this.uy;
       }
-      n = s - c * gy;
-      if (n < 0) n = 0;
-      if (this.modeC === SLIDE) {
+      n = this.tableNormal(gy);
+      if (this.C.mode === SLIDE) {
         const m = this.muS * n;
-        if (this.qsC) {
+        if (this.C.slaved) {
           // Slaved while I slips: along C's rates without its own friction (isotropic in h).
-          const ax = (1 - 2.5 * s) * gx;
-          const ay = -c + (2.5 - s) * gy;
+          this.cRatesFree(gx, gy);
+          const ax = this.cax;
+          const ay = this.cay;
           const an = Math.sqrt(ax * ax + ay * ay);
-          if (an > 0 && !this.frozenC) {
-            this.hintCx = ax / an;
-            this.hintCy = ay / an;
+          if (an > 0 && !this.C.held) {
+            this.C.hintX = ax / an;
+            this.C.hintY = ay / an;
           }
-          hx = -m * this.hintCx;
-          hy = -m * this.hintCy;
+          hx = -m * this.C.hintX;
+          hy = -m * this.C.hintY;
         } else {
-          this.direction(1, vx - oy - this.offCx, vy + ox - this.offCy);
+          this.direction(this.C, this.C.slipX(y), this.C.slipY(y));
           hx = -m * this.ux;
           hy = -m * this.uy;
         }
       } else {
         // C rolls (eq. 15b): dxC/dp = dyC/dp = 0.
-        hx = -this.q1 * gx;
-        hy = this.q2 - this.q3 * gy;
+        this.rollingC(gx, gy);
+        hx = this.hx;
+        hy = this.hy;
       }
-    } else if (this.modeC === SLIDE) {
+    } else if (this.C.mode === SLIDE) {
       // I rolls (eq. 15a), C slips: dxI/dp = dyI/dp = 0 with h = -μs (s - c gy) u_C.
-      if (this.qsC) {
-        this.ux = this.hintCx;
-        this.uy = this.hintCy;
+      if (this.C.slaved) {
+        this.ux = this.C.hintX;
+        this.uy = this.C.hintY;
       } else {
-        this.direction(1, vx - oy - this.offCx, vy + ox - this.offCy);
+        this.direction(this.C, this.C.slipX(y), this.C.slipY(y));
       }
       const fx = this.ux;
       const fy = this.uy;
-      const k = (2.5 - s) * this.muS * fy;
       // (den > 0 whenever this branch is feasible: checked on entry, see stickMargin.)
-      gy = (k * s - s * c) / (s * s + 2.5 + k * c);
+      gy = this.rollingIgy(fy);
       n = s - c * gy;
       const m = this.muS * n;
       hx = -m * fx;
@@ -183,27 +255,23 @@ export class CushionModel {
   }
 
   /**
-   * Unit direction of contact 0's (I) or 1's (C) slip (ex, ey) into (ux, uy), noting its
+   * Unit direction of a contact's slip (ex, ey) into (ux, uy), noting its
    * component along the step's starting direction (minDot). Below epsSlip the hint; inside a step,
    * past the zero or below epsSlip, the starting direction: the sliding equations continued, so
    * that a step aimed at the zero may land a hair beyond it (the solver cuts deeper crossings).
    */
-  private direction(contact: number, ex: number, ey: number): void {
-    const rx = contact === 0 ? this.refIx : this.refCx;
-    const ry = contact === 0 ? this.refIy : this.refCy;
+  private direction(ct: Contact, ex: number, ey: number): void {
+    const rx = ct.refX;
+    const ry = ct.refY;
     const d = ex * rx + ey * ry;
-    if (contact === 0) {
-      if (d < this.minDotI) this.minDotI = d;
-    } else if (d < this.minDotC) {
-      this.minDotC = d;
-    }
+    if (d < ct.minDot) ct.minDot = d;
     const r = Math.sqrt(ex * ex + ey * ey);
     if (this.stepping && (d <= 0 || r <= this.epsSlip)) {
       this.ux = rx;
       this.uy = ry;
     } else if (r <= this.epsSlip) {
-      this.ux = contact === 0 ? this.hintIx : this.hintCx;
-      this.uy = contact === 0 ? this.hintIy : this.hintCy;
+      this.ux = ct.hintX;
+      this.uy = ct.hintY;
     } else {
       this.ux = ex / r;
       this.uy = ey / r;
@@ -213,7 +281,7 @@ export class CushionModel {
   /** dy/dp at y, written into out (eq. 14 in the variables above). */
   derivative(y: Float64Array, out: Float64Array): void {
     const vy = y[1]!;
-    this.friction(y[0]!, vy, y[2]!, y[3]!, y[4]!);
+    this.friction(y);
     const { gx, gy, hx, hy, s, c } = this;
     out[0] = gx + hx;
     out[1] = -c - s * gy + hy;
@@ -229,18 +297,18 @@ export class CushionModel {
    * -1 when none is stuck.
    */
   stickMargin(y: Float64Array): number {
-    if (this.modeI === SLIDE && this.modeC === SLIDE) return -1;
-    const saveI = this.minDotI;
-    const saveC = this.minDotC;
-    this.friction(y[0]!, y[1]!, y[2]!, y[3]!, y[4]!);
-    this.minDotI = saveI;
-    this.minDotC = saveC;
+    if (this.I.mode === SLIDE && this.C.mode === SLIDE) return -1;
+    const saveI = this.I.minDot;
+    const saveC = this.C.minDot;
+    this.friction(y);
+    this.I.minDot = saveI;
+    this.C.minDot = saveC;
     let margin = -1;
-    if (this.modeI === STICK) {
-      if (this.modeC === SLIDE && !(this.nC > 0)) return 1; // the rolling branch has no solution
+    if (this.I.mode === STICK) {
+      if (this.C.mode === SLIDE && !(this.nC > 0)) return 1; // the rolling branch has no solution
       margin = Math.sqrt(this.gx * this.gx + this.gy * this.gy) - this.muW;
     }
-    if (this.modeC === STICK) {
+    if (this.C.mode === STICK) {
       const m = Math.sqrt(this.hx * this.hx + this.hy * this.hy) - this.muS * (this.nC > 0 ? this.nC : 0);
       if (m > margin) margin = m;
     }
@@ -252,17 +320,17 @@ export class CushionModel {
    * friction rolling would need (its rates are isotropic in h, so that is the exact onset).
    */
   onsetC(y: Float64Array): boolean {
-    this.modeC = STICK;
-    this.friction(y[0]!, y[1]!, y[2]!, y[3]!, y[4]!);
+    this.C.mode = STICK;
+    this.friction(y);
     const { hx, hy } = this;
     const norm = Math.sqrt(hx * hx + hy * hy);
-    this.qsC = false;
-    this.frozenC = false;
+    this.C.slaved = false;
+    this.C.held = false;
     if (norm <= this.muS * (this.nC > 0 ? this.nC : 0)) return true;
-    this.modeC = SLIDE;
-    this.qsC = true;
-    this.hintCx = -hx / norm;
-    this.hintCy = -hy / norm;
+    this.C.mode = SLIDE;
+    this.C.slaved = true;
+    this.C.hintX = -hx / norm;
+    this.C.hintY = -hy / norm;
     return false;
   }
 
@@ -271,18 +339,18 @@ export class CushionModel {
    * solves (λ + μw B) u = a, |u| = 1, λ >= 0, with a + B g I's rates as a function of g.
    */
   onsetI(y: Float64Array): boolean {
-    this.modeI = STICK;
-    this.friction(y[0]!, y[1]!, y[2]!, y[3]!, y[4]!);
-    this.qsI = false;
-    this.frozenI = false;
+    this.I.mode = STICK;
+    this.friction(y);
+    this.I.slaved = false;
+    this.I.held = false;
     // (The rolling branch exists only while its denominator is positive, i.e. nC > 0.)
     if (this.nC > 0 && this.gx * this.gx + this.gy * this.gy <= this.muW * this.muW) return true;
-    this.modeI = SLIDE;
-    this.qsI = true;
-    this.affineAt(y[0]!, y[1]!, y[2]!, y[3]!);
+    this.I.mode = SLIDE;
+    this.I.slaved = true;
+    this.affineAt(y);
     this.onsetDirection(this.ax, this.ay, this.b11, this.b12, this.b22, false);
-    this.hintIx = this.ux;
-    this.hintIy = this.uy;
+    this.I.hintX = this.ux;
+    this.I.hintY = this.uy;
     return false;
   }
 
@@ -297,22 +365,22 @@ export class CushionModel {
    * I's slip rates as an affine function of its friction g, the rest frozen. C rolling (eq. 15b
    * gives h): a = (0, 5/7 (1+s) c). C slipping: h = -μs (s - c gy) u_C in the rates above.
    */
-  private affineAt(vx: number, vy: number, ox: number, oy: number): void {
+  private affineAt(y: Float64Array): void {
     const s = this.s;
     const c = this.c;
-    if (this.modeC === STICK) {
+    if (this.C.mode === STICK) {
       this.ax = 0;
-      this.ay = (5 / 7) * (1 + s) * c;
-      this.b11 = 3.5 - (2 / 7) * (1 - 2.5 * s) * (1 - 2.5 * s);
+      this.ay = this.ra;
+      this.b11 = this.rb1;
       this.b12 = 0;
-      this.b22 = s * s + 2.5 - (2 / 7) * (2.5 - s) * (2.5 - s);
+      this.b22 = this.rb2;
       return;
     }
-    let fx = this.hintCx;
-    let fy = this.hintCy;
-    if (!this.qsC) {
-      const ex = vx - oy - this.offCx;
-      const ey = vy + ox - this.offCy;
+    let fx = this.C.hintX;
+    let fy = this.C.hintY;
+    if (!this.C.slaved) {
+      const ex = this.C.slipX(y);
+      const ey = this.C.slipY(y);
       const rc = Math.sqrt(ex * ex + ey * ey);
       if (rc > this.epsSlip) {
         fx = ex / rc;
@@ -332,7 +400,7 @@ export class CushionModel {
    * λ of either sign (λ < 0: the slip shrinks along u). Leaves u in (ux, uy) and returns λ.
    */
   slavedI(y: Float64Array): number {
-    this.affineAt(y[0]!, y[1]!, y[2]!, y[3]!);
+    this.affineAt(y);
     return this.onsetDirection(this.ax, this.ay, this.b11, this.b12, this.b22, true);
   }
 
@@ -341,14 +409,14 @@ export class CushionModel {
    * u = a / |a| and λ = |a| - 7/2 μs N. NaN when there is no such direction.
    */
   slavedC(y: Float64Array): number {
-    if (this.modeI === STICK) return this.slavedCRolling(y);
+    if (this.I.mode === STICK) return this.slavedCRolling(y);
     const s = this.s;
     const c = this.c;
-    let ex = this.hintIx;
-    let ey = this.hintIy;
-    if (!this.qsI) {
-      const x = this.slipIx(y);
-      const z = this.slipIy(y);
+    let ex = this.I.hintX;
+    let ey = this.I.hintY;
+    if (!this.I.slaved) {
+      const x = this.I.slipX(y);
+      const z = this.I.slipY(y);
       const r = Math.sqrt(x * x + z * z);
       if (r > this.epsSlip) {
         ex = x / r;
@@ -357,10 +425,10 @@ export class CushionModel {
     }
     const gx = -this.muW * ex;
     const gy = -this.muW * ey;
-    let n = s - c * gy;
-    if (n < 0) n = 0;
-    const ax = (1 - 2.5 * s) * gx;
-    const ay = -c + (2.5 - s) * gy;
+    const n = this.tableNormal(gy);
+    this.cRatesFree(gx, gy);
+    const ax = this.cax;
+    const ay = this.cay;
     const an = Math.sqrt(ax * ax + ay * ay);
     if (!(an > 0)) return NaN;
     this.ux = ax / an;
@@ -374,16 +442,14 @@ export class CushionModel {
    * is slaved to it, with the rate from the rolling conditions; NaN otherwise.
    */
   private slavedCRolling(y: Float64Array): number {
-    const ex = this.slipCx(y);
-    const ey = this.slipCy(y);
+    const ex = this.C.slipX(y);
+    const ey = this.C.slipY(y);
     if (!(Math.abs(ex) <= 1e-3 * Math.abs(ey))) return NaN;
     const s = this.s;
     const c = this.c;
     const fy = ey > 0 ? 1 : -1;
-    const k = (2.5 - s) * this.muS * fy;
-    const den = s * s + 2.5 + k * c;
-    if (!(den > 0)) return NaN;
-    const gy = (k * s - s * c) / den;
+    const gy = this.rollingIgy(fy);
+    if (!(this.den > 0)) return NaN;
     const n = s - c * gy;
     if (!(n > 0)) return NaN;
     this.ux = 0;
@@ -403,39 +469,37 @@ export class CushionModel {
     const c = this.c;
     const f = c / (1 + s);
     // (A rolling contact is never slaved.)
-    this.qsI = this.qsC = this.frozenI = this.frozenC = false;
+    this.I.slaved = this.C.slaved = this.I.held = this.C.held = false;
     if (f <= this.muW && f <= this.muS) {
-      this.modeI = STICK;
-      this.modeC = STICK;
+      this.I.mode = STICK;
+      this.C.mode = STICK;
       return true;
     }
-    const k1 = 3.5 - (2 / 7) * (1 - 2.5 * s) * (1 - 2.5 * s);
-    const k3 = s * s + 2.5 - (2 / 7) * (2.5 - s) * (2.5 - s);
-    this.onsetDirection(0, (5 / 7) * (1 + s) * c, k1, 0, k3, false);
+    this.onsetDirection(0, this.ra, this.rb1, 0, this.rb2, false);
     const gx = -this.muW * this.ux;
     const gy = -this.muW * this.uy;
-    const hx = -this.q1 * gx;
-    const hy = this.q2 - this.q3 * gy;
-    let n = s - c * gy;
-    if (n < 0) n = 0;
-    this.modeI = SLIDE;
-    this.hintIx = this.ux;
-    this.hintIy = this.uy;
+    this.rollingC(gx, gy);
+    const hx = this.hx;
+    const hy = this.hy;
+    const n = this.tableNormal(gy);
+    this.I.mode = SLIDE;
+    this.I.hintX = this.ux;
+    this.I.hintY = this.uy;
     if (hx * hx + hy * hy <= this.muS * n * (this.muS * n)) {
-      this.modeC = STICK;
+      this.C.mode = STICK;
       return false;
     }
-    this.modeI = STICK;
-    this.modeC = SLIDE;
-    this.qsC = true;
-    this.hintCx = 0;
-    this.hintCy = -1;
-    this.friction(y[0]!, y[1]!, y[2]!, y[3]!, y[4]!);
+    this.I.mode = STICK;
+    this.C.mode = SLIDE;
+    this.C.slaved = true;
+    this.C.hintX = 0;
+    this.C.hintY = -1;
+    this.friction(y);
     if (this.nC > 0 && this.gx * this.gx + this.gy * this.gy <= this.muW * this.muW) return false;
-    this.qsC = false;
-    this.modeI = SLIDE;
-    this.hintIx = 0;
-    this.hintIy = 1;
+    this.C.slaved = false;
+    this.I.mode = SLIDE;
+    this.I.hintX = 0;
+    this.I.hintY = 1;
     return false;
   }
 

@@ -14,7 +14,7 @@ import {
   ZERO_FRACTION, zeroDistance,
 } from './control.ts';
 import { DIM, Dopri5 } from './integrator.ts';
-import { CushionModel, SLIDE, STICK } from './model.ts';
+import { CushionModel, SLIDE, STICK, type Contact } from './model.ts';
 import type { CushionOutcome } from './types.ts';
 
 /** Stalls an impact may re-decide (redecideAtStall): a guard against trading modes. */
@@ -125,8 +125,8 @@ export class CushionSolver {
     const tolV = this.atolV;
     // A slip that is zero at the start (e.g. the table contact of a ball rolling on the cloth).
     const eps0 = ZERO_FRACTION * this.V;
-    const zI = this.slipNorm(0) <= eps0;
-    const zC = this.slipNorm(1) <= eps0;
+    const zI = this.slipNorm(model.I) <= eps0;
+    const zC = this.slipNorm(model.C) <= eps0;
     if ((zI || zC) && this.enterZero(zI, zC)) return this.finishStalled();
     model.derivative(y, rk.k1);
     this.recordTrace(0, 0);
@@ -148,7 +148,7 @@ export class CushionSolver {
         throw new Error(`cushionRebound: no end after ${MAX_STEPS} steps (P = ${this.p * this.M} N s, state ${Array.from(y).join(', ')})`);
       }
       // Do not step past the zero of a slaved slip.
-      if (model.qsI || model.qsC) {
+      if (model.I.slaved || model.C.slaved) {
         this.zeroNow = 0;
         const d = this.slavedStart(step);
         if (this.zeroNow !== 0) {
@@ -159,60 +159,60 @@ export class CushionSolver {
         }
         if (d < step) step = d;
       }
-      if (model.modeI === SLIDE && !model.qsI) {
-        let ex = model.slipIx(y);
-        const ey = model.slipIy(y);
-        if (model.modeC === STICK && ex !== 0 && Math.abs(ex) <= PIN_FRACTION * Math.abs(ey) && ex * model.rateIx(rk.k1) < 0) {
+      if (model.I.mode === SLIDE && !model.I.slaved) {
+        let ex = model.I.slipX(y);
+        const ey = model.I.slipY(y);
+        if (model.C.mode === STICK && ex !== 0 && Math.abs(ex) <= PIN_FRACTION * Math.abs(ey) && ex * model.I.rateX(rk.k1) < 0) {
           // With C rolling, a cushion slip along ±y stays so; one along it to within PIN_FRACTION
           // whose x part shrinks is put on it (the x part into the offset), or its relaxation
           // would bound every step.
-          model.offIx = y[0]! + model.s * y[3]! - model.c * y[4]!;
-          ex = model.slipIx(y);
+          model.I.offX = model.I.rawX(y);
+          ex = model.I.slipX(y);
           model.derivative(y, rk.k1);
         }
         const r = Math.sqrt(ex * ex + ey * ey);
         if (r > model.epsSlip) {
-          model.refIx = ex / r;
-          model.refIy = ey / r;
-          const rx = model.rateIx(rk.k1);
+          model.I.refX = ex / r;
+          model.I.refY = ey / r;
+          const rx = model.I.rateX(rk.k1);
           // (A slip exactly along ±y with C rolling cannot wobble: its relaxation does not bound the step.)
-          const pinned = ex === 0 && rx === 0 && model.modeC === STICK;
-          step = this.limitBySlip(ex, ey, r, rx, model.rateIy(rk.k1), step, pinned ? 0 : this.relaxI);
+          const pinned = ex === 0 && rx === 0 && model.C.mode === STICK;
+          step = this.limitBySlip(ex, ey, r, rx, model.I.rateY(rk.k1), step, pinned ? 0 : this.relaxI);
         } else {
-          model.refIx = model.hintIx;
-          model.refIy = model.hintIy;
+          model.I.refX = model.I.hintX;
+          model.I.refY = model.I.hintY;
         }
       }
-      if (model.modeC === SLIDE && !model.qsC) {
-        const ex = model.slipCx(y);
-        const ey = model.slipCy(y);
+      if (model.C.mode === SLIDE && !model.C.slaved) {
+        const ex = model.C.slipX(y);
+        const ey = model.C.slipY(y);
         const r = Math.sqrt(ex * ex + ey * ey);
         if (r > model.epsSlip) {
-          model.refCx = ex / r;
-          model.refCy = ey / r;
-          step = this.limitBySlip(ex, ey, r, model.rateCx(rk.k1), model.rateCy(rk.k1), step, this.relaxC);
+          model.C.refX = ex / r;
+          model.C.refY = ey / r;
+          step = this.limitBySlip(ex, ey, r, model.C.rateX(rk.k1), model.C.rateY(rk.k1), step, this.relaxC);
         } else {
-          model.refCx = model.hintCx;
-          model.refCy = model.hintCy;
+          model.C.refX = model.C.hintX;
+          model.C.refY = model.C.hintY;
         }
       }
-      model.minDotI = Infinity;
-      model.minDotC = Infinity;
-      const slavedI = model.qsI && model.modeI === SLIDE;
-      const slavedC = model.qsC && model.modeC === SLIDE;
-      const uIx = model.hintIx;
-      const uIy = model.hintIy;
-      const uCx = model.hintCx;
-      const uCy = model.hintCy;
+      model.I.minDot = Infinity;
+      model.C.minDot = Infinity;
+      const slavedI = model.I.slaved && model.I.mode === SLIDE;
+      const slavedC = model.C.slaved && model.C.mode === SLIDE;
+      const uIx = model.I.hintX;
+      const uIy = model.I.hintY;
+      const uCx = model.C.hintX;
+      const uCy = model.C.hintY;
       model.stepping = true;
       rk.step(model, y, step, atol);
       model.stepping = false;
-      if (model.minDotI < -this.epsEv || model.minDotC < -this.epsEv) {
+      if (model.I.minDot < -this.epsEv || model.C.minDot < -this.epsEv) {
         // A slip went through zero inside the step: retry up to the interpolated zero.
         this.rejected++;
         let t = 0.5;
-        if (model.minDotI < -this.epsEv) t = Math.min(t, this.crossing(0));
-        if (model.minDotC < -this.epsEv) t = Math.min(t, this.crossing(1));
+        if (model.I.minDot < -this.epsEv) t = Math.min(t, this.crossing(model.I));
+        if (model.C.minDot < -this.epsEv) t = Math.min(t, this.crossing(model.C));
         step *= t;
         continue;
       }
@@ -231,8 +231,8 @@ export class CushionSolver {
           if (++this.slavingRejects >= 3) {
             // The slaved direction jumps however short the step: the slip follows its own.
             this.slavingRejects = 0;
-            if (slavedI) this.release(0, model.slipIx(y), model.slipIy(y), this.slipNorm(0));
-            if (slavedC) this.release(1, model.slipCx(y), model.slipCy(y), this.slipNorm(1));
+            if (slavedI) this.release(model.I, model.I.slipX(y), model.I.slipY(y), this.slipNorm(model.I));
+            if (slavedC) this.release(model.C, model.C.slipX(y), model.C.slipY(y), this.slipNorm(model.C));
             model.derivative(y, rk.k1);
             continue;
           }
@@ -254,15 +254,15 @@ export class CushionSolver {
         model.derivative(y, rk.k1);
         continue;
       }
-      const rI0 = model.modeI === SLIDE ? this.slipNorm(0) : 0;
-      const rC0 = model.modeC === SLIDE ? this.slipNorm(1) : 0;
+      const rI0 = model.I.mode === SLIDE ? this.slipNorm(model.I) : 0;
+      const rC0 = model.C.mode === SLIDE ? this.slipNorm(model.C) : 0;
       const vyStart = y[1]!;
-      const dI0 = this.zeroDistanceOf(0);
-      const dC0 = this.zeroDistanceOf(1);
+      const dI0 = this.zeroDistanceOf(this.model.I);
+      const dC0 = this.zeroDistanceOf(this.model.C);
       y.set(rk.y1);
       rk.swap();
       this.p += step;
-      const approach = approachFactor(dI0, this.zeroDistanceOf(0), dC0, this.zeroDistanceOf(1));
+      const approach = approachFactor(dI0, this.zeroDistanceOf(this.model.I), dC0, this.zeroDistanceOf(this.model.C));
       if (this.backAtZero(vyStart)) return;
       if (this.settleSlips(rI0, rC0, tolV)) return;
       step = nextStep(step, err, errPrev);
@@ -286,7 +286,7 @@ export class CushionSolver {
     let stop = 1;
     let left = false;
     this.dense = false;
-    if ((model.modeI === STICK || model.modeC === STICK) && model.stickMargin(rk.y1) > 0) {
+    if ((model.I.mode === STICK || model.C.mode === STICK) && model.stickMargin(rk.y1) > 0) {
       this.prepare();
       stop = this.stickRoot(0, 1);
       this.coneExit = stop;
@@ -311,7 +311,7 @@ export class CushionSolver {
         y.set(this.ye);
         this.p += from * step;
         const lim = 10 * this.epsEv;
-        if (this.enterZero(model.modeI === SLIDE && this.slipNorm(0) <= lim, model.modeC === SLIDE && this.slipNorm(1) <= lim)) {
+        if (this.enterZero(model.I.mode === SLIDE && this.slipNorm(model.I) <= lim, model.C.mode === SLIDE && this.slipNorm(model.C) <= lim)) {
           this.finishStalled();
           return ENDED;
         }
@@ -400,12 +400,12 @@ export class CushionSolver {
    */
   private settleSlips(rI0: number, rC0: number, tolV: number): boolean {
     const model = this.model;
-    const slideI = model.modeI === SLIDE;
-    const slideC = model.modeC === SLIDE;
-    const rI1 = slideI ? this.slipNorm(0) : 0;
-    const rC1 = slideC ? this.slipNorm(1) : 0;
-    const zI = slideI && rI1 <= this.epsEv && (rI1 < rI0 || model.minDotI < 0);
-    const zC = slideC && rC1 <= this.epsEv && (rC1 < rC0 || model.minDotC < 0);
+    const slideI = model.I.mode === SLIDE;
+    const slideC = model.C.mode === SLIDE;
+    const rI1 = slideI ? this.slipNorm(model.I) : 0;
+    const rC1 = slideC ? this.slipNorm(model.C) : 0;
+    const zI = slideI && rI1 <= this.epsEv && (rI1 < rI0 || model.I.minDot < 0);
+    const zC = slideC && rC1 <= this.epsEv && (rC1 < rC0 || model.C.minDot < 0);
     if (zI || zC) {
       if (this.enterZero(zI, zC)) {
         this.finishStalled();
@@ -424,21 +424,18 @@ export class CushionSolver {
     return { vx: y[0]! + 0, vy: y[1]! + 0, wx: y[2]! / R + 0, wy: y[3]! / R + 0, wz: y[4]! / R + 0 };
   }
 
-  /** Contact 0's (I) or 1's (C) slip component along its starting direction at y. */
-  private along(contact: number, y: Float64Array): number {
-    const m = this.model;
-    return contact === 0
-      ? m.slipIx(y) * m.refIx + m.slipIy(y) * m.refIy
-      : m.slipCx(y) * m.refCx + m.slipCy(y) * m.refCy;
+  /** A contact's slip component along its starting direction at y. */
+  private along(ct: Contact, y: Float64Array): number {
+    return ct.slipX(y) * ct.refX + ct.slipY(y) * ct.refY;
   }
 
   /**
    * Fraction of the rejected step at which a slip's component along its starting direction
    * crossed zero, interpolated from the step's ends; 0.5 when the end did not cross.
    */
-  private crossing(contact: number): number {
-    const d0 = this.along(contact, this.y);
-    const d1 = this.along(contact, this.rk.y1);
+  private crossing(ct: Contact): number {
+    const d0 = this.along(ct, this.y);
+    const d1 = this.along(ct, this.rk.y1);
     if (!(d0 > 0 && d1 < 0)) return 0.5;
     const t = d0 / (d0 - d1);
     return t < 0.01 ? 0.01 : t > 0.99 ? 0.99 : t;
@@ -449,31 +446,16 @@ export class CushionSolver {
     const m = this.model;
     const e = this.e;
     let worst = 0;
-    for (let contact = 0; contact < 2; contact++) {
-      if (!(contact === 0 ? slavedI && m.qsI : slavedC && m.qsC)) continue;
-      this.slipOf(contact, this.rk.y1, e);
-      const dx = contact === 0 ? m.hintIx - uIx : m.hintCx - uCx;
-      const dy = contact === 0 ? m.hintIy - uIy : m.hintCy - uCy;
+    for (let i = 0; i < 2; i++) {
+      const ct = i === 0 ? m.I : m.C;
+      if (!(i === 0 ? slavedI : slavedC) || !ct.slaved) continue;
+      this.slipOf(ct, this.rk.y1, e);
+      const dx = ct.hintX - (i === 0 ? uIx : uCx);
+      const dy = ct.hintY - (i === 0 ? uIy : uCy);
       const err = Math.sqrt((e.x * e.x + e.y * e.y) * (dx * dx + dy * dy)) / 2.5;
       if (err > worst) worst = err;
     }
     return worst;
-  }
-
-  /** Sets contact 0's (I) or 1's (C) slaved and frozen flags and its hint. */
-  private setSlaved(contact: number, qs: boolean, frozen: boolean, ux: number, uy: number): void {
-    const m = this.model;
-    if (contact === 0) {
-      m.qsI = qs;
-      m.frozenI = frozen;
-      m.hintIx = ux;
-      m.hintIy = uy;
-    } else {
-      m.qsC = qs;
-      m.frozenC = frozen;
-      m.hintCx = ux;
-      m.hintCy = uy;
-    }
   }
 
   /**
@@ -489,35 +471,27 @@ export class CushionSolver {
     return this.V;
   }
 
-  /** |rate| of contact 0's (I) or 1's (C) slip from a derivative k. */
-  private rateSpeed(contact: number, k: Float64Array): number {
-    const m = this.model;
-    const rx = contact === 0 ? m.rateIx(k) : m.rateCx(k);
-    const ry = contact === 0 ? m.rateIy(k) : m.rateCy(k);
+  /** |rate| of a contact's slip from a derivative k. */
+  private rateSpeed(ct: Contact, k: Float64Array): number {
+    const rx = ct.rateX(k);
+    const ry = ct.rateY(k);
     return Math.sqrt(rx * rx + ry * ry);
   }
 
   /** A slaved contact with slip (ex, ey), |slip| = r, follows its own direction again. */
-  private release(contact: number, ex: number, ey: number, r: number): void {
-    const m = this.model;
-    this.setSlaved(contact, false, false, contact === 0 ? m.hintIx : m.hintCx, contact === 0 ? m.hintIy : m.hintCy);
-    if (!(r > m.epsSlip)) return;
-    if (contact === 0) {
-      m.refIx = ex / r;
-      m.refIy = ey / r;
-    } else {
-      m.refCx = ex / r;
-      m.refCy = ey / r;
-    }
+  private release(ct: Contact, ex: number, ey: number, r: number): void {
+    ct.slave(false, false, ct.hintX, ct.hintY);
+    if (!(r > this.model.epsSlip)) return;
+    ct.refX = ex / r;
+    ct.refY = ey / r;
   }
 
   private readonly e = { x: -0, y: -0 };
 
-  /** Contact 0's (I) or 1's (C) effective slip at y into out. */
-  private slipOf(contact: number, y: Float64Array, out: { x: number; y: number }): void {
-    const m = this.model;
-    out.x = contact === 0 ? m.slipIx(y) : m.slipCx(y);
-    out.y = contact === 0 ? m.slipIy(y) : m.slipCy(y);
+  /** A contact's effective slip at y into out. */
+  private slipOf(ct: Contact, y: Float64Array, out: { x: number; y: number }): void {
+    out.x = ct.slipX(y);
+    out.y = ct.slipY(y);
   }
 
   /**
@@ -530,26 +504,26 @@ export class CushionSolver {
     const y = this.y;
     const e = this.e;
     let d = Infinity;
-    for (let contact = 0; contact < 2; contact++) {
-      if (!(contact === 0 ? m.qsI : m.qsC) || (contact === 0 ? m.modeI : m.modeC) !== SLIDE) continue;
-      this.slipOf(contact, y, e);
+    for (const ct of m.contacts) {
+      if (!ct.slaved || ct.mode !== SLIDE) continue;
+      this.slipOf(ct, y, e);
       const r = Math.sqrt(e.x * e.x + e.y * e.y);
-      if (contact === 0 ? m.frozenI : m.frozenC) {
+      if (ct.held) {
         // A held slip stays held while its rates stay negligible (with a margin of ten).
-        if (this.rateSpeed(contact, this.rk.k1) * this.holdSpan() > 10 * this.epsEv) this.release(contact, e.x, e.y, r);
+        if (this.rateSpeed(ct, this.rk.k1) * this.holdSpan() > 10 * this.epsEv) this.release(ct, e.x, e.y, r);
         continue;
       }
-      if (r > m.epsSlip && r <= QS_HOLD_RHO * this.V && this.rateSpeed(contact, this.rk.k1) * this.holdSpan() <= this.epsEv) {
-        this.setSlaved(contact, true, true, e.x / r, e.y / r);
+      if (r > m.epsSlip && r <= QS_HOLD_RHO * this.V && this.rateSpeed(ct, this.rk.k1) * this.holdSpan() <= this.epsEv) {
+        ct.slave(true, true, e.x / r, e.y / r);
         continue;
       }
-      const lam = contact === 0 ? m.slavedI(y) : m.slavedC(y);
+      const lam = ct === m.I ? m.slavedI(y) : m.slavedC(y);
       if (!(lam === lam) || (lam > 0 && r > QS_EXIT * this.V)) {
         // No slaved direction (C with I rolling, off the y axis) or grown: it follows its own.
-        this.release(contact, e.x, e.y, r);
+        this.release(ct, e.x, e.y, r);
         continue;
       }
-      this.setSlaved(contact, true, false, m.ux, m.uy);
+      ct.slave(true, false, m.ux, m.uy);
       const along = e.x * m.ux + e.y * m.uy;
       if (lam < 0 && r > m.epsSlip) {
         // A shrinking slaved slip only loses its part along u: once what is across u is as
@@ -557,8 +531,8 @@ export class CushionSolver {
         const px = e.x - along * m.ux;
         const py = e.y - along * m.uy;
         if (!(along > Math.sqrt(px * px + py * py))) {
-          if (r <= 10 * this.epsEv) this.zeroNow |= contact === 0 ? 1 : 2;
-          else this.release(contact, e.x, e.y, r);
+          if (r <= 10 * this.epsEv) this.zeroNow |= ct === m.I ? 1 : 2;
+          else this.release(ct, e.x, e.y, r);
           continue;
         }
       }
@@ -582,36 +556,31 @@ export class CushionSolver {
     const y = this.y;
     const e = this.e;
     let changed = false;
-    for (let contact = 0; contact < 2; contact++) {
-      if (!(contact === 0 ? m.modeI === SLIDE && !m.qsI : m.modeC === SLIDE && !m.qsC)) continue;
-      this.slipOf(contact, y, e);
+    for (const ct of m.contacts) {
+      if (ct.mode !== SLIDE || ct.slaved) continue;
+      this.slipOf(ct, y, e);
       const ex = e.x;
       const ey = e.y;
       const r = Math.sqrt(ex * ex + ey * ey);
-      if (r > m.epsSlip && r <= QS_HOLD_RHO * this.V && this.rateSpeed(contact, this.rk.k1) * this.holdSpan() <= this.epsEv) {
+      if (r > m.epsSlip && r <= QS_HOLD_RHO * this.V && this.rateSpeed(ct, this.rk.k1) * this.holdSpan() <= this.epsEv) {
         // Its rates vanish along its own direction (friction at the both-rolling threshold).
-        this.setSlaved(contact, true, true, ex / r, ey / r);
+        ct.slave(true, true, ex / r, ey / r);
         changed = true;
         continue;
       }
       if (!(r <= QS_RHO * this.V) || !(r > 0)) continue;
-      const lam = contact === 0 ? m.slavedI(y) : m.slavedC(y);
+      const lam = ct === m.I ? m.slavedI(y) : m.slavedC(y);
       if (!(lam === lam)) continue;
       // Never slaved to a direction in which it would grow while it shrinks (or the reverse).
       const k1 = this.rk.k1;
-      const rate = contact === 0 ? ex * m.rateIx(k1) + ey * m.rateIy(k1) : ex * m.rateCx(k1) + ey * m.rateCy(k1);
+      const rate = ex * ct.rateX(k1) + ey * ct.rateY(k1);
       if ((lam > 0) !== (rate > 0)) continue;
       const dx = ex / r - m.ux;
       const dy = ey / r - m.uy;
       if (!(Math.sqrt(dx * dx + dy * dy) * r <= QS_FRACTION * tolV)) continue;
-      if (contact === 0) {
-        m.offIx += ex - r * m.ux;
-        m.offIy += ey - r * m.uy;
-      } else {
-        m.offCx += ex - r * m.ux;
-        m.offCy += ey - r * m.uy;
-      }
-      this.setSlaved(contact, true, contact === 0 ? m.frozenI : m.frozenC, m.ux, m.uy);
+      ct.offX += ex - r * m.ux;
+      ct.offY += ey - r * m.uy;
+      ct.slave(true, ct.held, m.ux, m.uy);
       changed = true;
     }
     return changed;
@@ -622,9 +591,9 @@ export class CushionSolver {
     const m = this.model;
     const lim = 10 * this.epsEv;
     const e = this.e;
-    for (let contact = 0; contact < 2; contact++) {
-      if ((contact === 0 ? m.modeI : m.modeC) !== SLIDE) continue;
-      this.slipOf(contact, ys, e);
+    for (const ct of m.contacts) {
+      if (ct.mode !== SLIDE) continue;
+      this.slipOf(ct, ys, e);
       if (e.x * e.x + e.y * e.y <= lim * lim) return true;
     }
     return false;
@@ -645,24 +614,24 @@ export class CushionSolver {
   }
 
   /** Impulse to the zero of contact 0's (I) or 1's (C) slip, sliding on its own direction with friction; else Infinity. */
-  private zeroDistanceOf(contact: number): number {
+  private zeroDistanceOf(ct: Contact): number {
     const m = this.model;
-    if (contact === 0 ? m.modeI !== SLIDE || m.qsI : m.modeC !== SLIDE || m.qsC) return Infinity;
-    if (!((contact === 0 ? m.muW : m.muS) > 0)) return Infinity;
+    if (ct.mode !== SLIDE || ct.slaved) return Infinity;
+    if (!(ct.mu > 0)) return Infinity;
     const k = this.rk.k1;
     const e = this.e;
-    this.slipOf(contact, this.y, e);
+    this.slipOf(ct, this.y, e);
     const r = Math.sqrt(e.x * e.x + e.y * e.y);
     if (!(r > m.epsSlip)) return Infinity;
-    const rx = contact === 0 ? m.rateIx(k) : m.rateCx(k);
-    const ry = contact === 0 ? m.rateIy(k) : m.rateCy(k);
+    const rx = ct.rateX(k);
+    const ry = ct.rateY(k);
     return zeroDistance(r, (e.x * rx + e.y * ry) / r);
   }
 
   /** |effective slip| of contact 0 (I) or 1 (C) now. */
-  private slipNorm(contact: number): number {
+  private slipNorm(ct: Contact): number {
     const e = this.e;
-    this.slipOf(contact, this.y, e);
+    this.slipOf(ct, this.y, e);
     return Math.sqrt(e.x * e.x + e.y * e.y);
   }
 
@@ -673,22 +642,16 @@ export class CushionSolver {
   private enterZero(zI: boolean, zC: boolean): boolean {
     const m = this.model;
     const y = this.y;
-    const slideI = m.modeI === SLIDE;
-    const slideC = m.modeC === SLIDE;
-    if (zI) {
-      m.offIx = y[0]! + m.s * y[3]! - m.c * y[4]!;
-      m.offIy = -m.s * y[1]! + y[2]!;
-    }
-    if (zC) {
-      m.offCx = y[0]! - y[3]!;
-      m.offCy = y[1]! + y[2]!;
-    }
+    const slideI = m.I.mode === SLIDE;
+    const slideC = m.C.mode === SLIDE;
+    if (zI) m.I.zeroAt(y);
+    if (zC) m.C.zeroAt(y);
     let both = false;
-    if ((zI || m.modeI === STICK) && (zC || m.modeC === STICK)) both = m.onsetBoth(y);
+    if ((zI || m.I.mode === STICK) && (zC || m.C.mode === STICK)) both = m.onsetBoth(y);
     else if (zC) m.onsetC(y);
     else m.onsetI(y);
     this.zeroed = true;
-    if ((slideI && m.modeI === STICK) || (slideC && m.modeC === STICK)) this.stuck = true;
+    if ((slideI && m.I.mode === STICK) || (slideC && m.C.mode === STICK)) this.stuck = true;
     return both;
   }
 
@@ -710,8 +673,8 @@ export class CushionSolver {
   private slipsClear(): boolean {
     const m = this.model;
     const lim = QS_RHO * this.V;
-    if (m.modeI === SLIDE && (m.qsI || !(this.slipNorm(0) > lim))) return false;
-    if (m.modeC === SLIDE && (m.qsC || !(this.slipNorm(1) > lim))) return false;
+    if (m.I.mode === SLIDE && (m.I.slaved || !(this.slipNorm(m.I) > lim))) return false;
+    if (m.C.mode === SLIDE && (m.C.slaved || !(this.slipNorm(m.C) > lim))) return false;
     return true;
   }
 
@@ -720,18 +683,16 @@ export class CushionSolver {
     const m = this.model;
     const y = this.y;
     m.stickMargin(y); // (fills the rolling frictions at y)
-    if (m.modeI === STICK) {
+    if (m.I.mode === STICK) {
       const n = Math.sqrt(m.gx * m.gx + m.gy * m.gy);
-      m.modeI = SLIDE;
-      m.offIx = y[0]! + m.s * y[3]! - m.c * y[4]!;
-      m.offIy = -m.s * y[1]! + y[2]!;
-      this.setSlaved(0, true, false, n > 0 ? -m.gx / n : m.hintIx, n > 0 ? -m.gy / n : m.hintIy);
+      m.I.mode = SLIDE;
+      m.I.zeroAt(y);
+      m.I.slave(true, false, n > 0 ? -m.gx / n : m.I.hintX, n > 0 ? -m.gy / n : m.I.hintY);
     } else {
       const n = Math.sqrt(m.hx * m.hx + m.hy * m.hy);
-      m.modeC = SLIDE;
-      m.offCx = y[0]! - y[3]!;
-      m.offCy = y[1]! + y[2]!;
-      this.setSlaved(1, true, false, n > 0 ? -m.hx / n : m.hintCx, n > 0 ? -m.hy / n : m.hintCy);
+      m.C.mode = SLIDE;
+      m.C.zeroAt(y);
+      m.C.slave(true, false, n > 0 ? -m.hx / n : m.C.hintX, n > 0 ? -m.hy / n : m.C.hintY);
     }
   }
 
@@ -744,8 +705,8 @@ export class CushionSolver {
     if (this.redecisions >= REDECISIONS) return false;
     this.redecisions++;
     const m = this.model;
-    const zI = m.modeI === SLIDE && this.slipNorm(0) <= STALL_ZERO * this.epsEv;
-    const zC = m.modeC === SLIDE && this.slipNorm(1) <= STALL_ZERO * this.epsEv;
+    const zI = m.I.mode === SLIDE && this.slipNorm(m.I) <= STALL_ZERO * this.epsEv;
+    const zC = m.C.mode === SLIDE && this.slipNorm(m.C) <= STALL_ZERO * this.epsEv;
     if (!zI && !zC) return false;
     if (this.enterZero(zI, zC)) return false;
     m.derivative(this.y, this.rk.k1);
@@ -802,8 +763,8 @@ export class CushionSolver {
         xC: y[0]! - y[3]!,
         yC: y[1]! + y[2]!,
         W: y[5]! * M,
-        stickI: m.modeI === STICK,
-        stickC: m.modeC === STICK,
+        stickI: m.I.mode === STICK,
+        stickC: m.C.mode === STICK,
       });
     }
   }
