@@ -15,7 +15,7 @@ import { Store } from './store.ts';
 import { Api } from './api/routes.ts';
 import { AddressCap } from './ws/address.ts';
 import { bindWebSocket } from './ws/binding.ts';
-import { ComputerPool } from './computer/pool.ts';
+import { WorkerPool } from './workers/pool.ts';
 import { eventLoopStats } from './event-loop-stats.ts';
 
 export interface RunningServer {
@@ -45,27 +45,27 @@ export async function startServer(config: Config): Promise<RunningServer> {
   const { db, applied } = openDatabase(config.dbPath, config.migrationsDir);
   let service: GameService;
   let store: Store;
-  let computer: ComputerPool | undefined;
+  let workers: WorkerPool | undefined;
   try {
     // The store gives players from before migration 006 their name keys as it opens.
     store = new Store(db);
-    computer = new ComputerPool({ size: config.computerWorkers, budgetMs: config.computerThinkMs });
+    workers = new WorkerPool({ size: config.computerWorkers, budgetMs: config.computerThinkMs });
     service = new GameService(store, {
       seatHoldMs: config.seatHoldMs,
       guestsPerAddress: config.guestsPerAddress,
       guestKeepMs: config.guestKeepMs,
       ratedMinPlayMs: config.ratedMinPlayMs,
       maxTabsPerPlayer: config.maxTabsPerPlayer,
-      computer: { thinker: computer, pauseMs: config.computerPauseMs },
+      computer: { thinker: workers, pauseMs: config.computerPauseMs },
     });
   } catch (err) {
-    void computer?.close();
+    void workers?.close();
     db.close();
     throw err;
   }
   const files = loadStaticFiles(config.clientDir);
   const health = healthCheck({ version: VERSION, schema: () => schemaVersion(db), probeWrite: () => store.probeWrite(HEALTH_LOCK_WAIT_MS) });
-  const api = new Api(store, { perPlayer: config.practicePerMinute, perAddress: config.practicePerAddressPerMinute });
+  const api = new Api(store, { perPlayer: config.practicePerMinute, perAddress: config.practicePerAddressPerMinute }, workers);
   const loop = config.eventLoopStats ? eventLoopStats() : undefined;
   const handler = createRequestHandler(files, health, api, loop);
   // Slow requests hold a socket each: headers and whole requests have deadlines (answered 408),
@@ -86,7 +86,7 @@ export async function startServer(config: Config): Promise<RunningServer> {
       });
     });
   } catch (err) {
-    void computer.close();
+    void workers.close();
     loop?.stop();
     db.close();
     throw err;
@@ -115,7 +115,7 @@ export async function startServer(config: Config): Promise<RunningServer> {
       closing ??= new Promise<void>((resolve) => {
         binding.stop();
         loop?.stop();
-        void computer.close();
+        void workers.close();
         for (const socket of wss.clients) socket.close(1001, 'server shutting down');
         wss.close();
         http.close(() => {

@@ -3,14 +3,15 @@
 // to the store; practice requests are rate-limited per address and per player.
 import { randomBytes } from 'node:crypto';
 import type { IncomingMessage, ServerResponse } from 'node:http';
-import { MiscueError, SimulationInputError } from '../../shared/physics/index.ts';
-import { practiceRun, RuleError, type PracticeKind } from '../../shared/rules/index.ts';
+import type { PracticeKind } from '../../shared/rules/index.ts';
 import { PROVISIONAL_RD } from '../ratings/glicko2.ts';
 import { PRACTICE_SEED_TTL_MS, PracticeSeedError, type MatchRow, type PlayerRow, type RecordEntry, type Store } from '../store.ts';
 import { hashToken } from '../tokens.ts';
 import { ApiError, IdParam, LeaderboardQuery, MatchesQuery, parse, PracticeBody, PracticeStartBody, RecordsQuery } from './params.ts';
 import { addressKey } from '../address.ts';
 import { PRACTICE_LIMITS, RateLimiter, type PracticeLimits } from './rate-limit.ts';
+import { IN_PROCESS, type PracticeScorer } from '../workers/pool.ts';
+import { RefusedTask } from '../workers/tasks.ts';
 
 /** Largest request body accepted (bytes): a practice run of 500 shots fits well within it. */
 export const MAX_BODY_BYTES = 256 * 1024;
@@ -58,6 +59,8 @@ export class Api {
   constructor(
     private readonly store: Store,
     limits: PracticeLimits = PRACTICE_LIMITS,
+    /** Where practice runs are replayed: the server's worker pool, off the event loop. */
+    private readonly scorer: PracticeScorer = IN_PROCESS,
     private readonly now: () => number = Date.now,
   ) {
     this.perPlayer = new RateLimiter(limits.perPlayer);
@@ -196,11 +199,11 @@ export class Api {
   }
 
   /**
-   * Plays the run's shots from the start of its game, scores it, and keeps it with its records;
-   * only from a seed issued to the player for the kind and not used yet, checked before the shots
-   * are played and again as the run is saved.
+   * Plays the run's shots from the start of its game (in the worker pool), scores it, and keeps it
+   * with its records; only from a seed issued to the player for the kind and not used yet, checked
+   * before the shots are played and again as the run is saved.
    */
-  private practice(input: unknown): Json {
+  private async practice(input: unknown): Promise<Json> {
     const body = parse(PracticeBody, input, 'bad-body');
     const player = this.practiser(body.token);
     const seed = body.seed;
@@ -208,9 +211,9 @@ export class Api {
     if (state !== 'open') throw seedRefused(state, body.kind);
     let run;
     try {
-      run = practiceRun(body.kind as PracticeKind, String(player.id), seed, body.shots);
+      run = await this.scorer.scorePractice({ kind: body.kind as PracticeKind, player: String(player.id), seed, shots: body.shots });
     } catch (err) {
-      if (err instanceof RuleError || err instanceof MiscueError || err instanceof SimulationInputError) throw new ApiError(400, 'bad-shot', err.message);
+      if (err instanceof RefusedTask) throw new ApiError(400, 'bad-shot', err.message);
       throw err;
     }
     const records = run.achievements.map((a) => ({ what: a.what, player: player.id, value: a.value, better: a.what === 'break-and-run' ? -a.value : a.value }));
@@ -226,7 +229,7 @@ export class Api {
       kind: body.kind,
       seed,
       score: run.score,
-      shots: run.games.length,
+      shots: run.shots,
       records: run.achievements.map((a, i) => ({ what: a.what, value: a.value, standing: saved.standing[i] })),
     };
   }

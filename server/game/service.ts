@@ -16,7 +16,7 @@ import { GuestLimit } from './guest-limit.ts';
 import { Lobby, type ConnId } from './lobby.ts';
 import { afterMove, deadlineAfter, gameFor, Room, roomView, type RoomState } from './room.ts';
 import { isLevel, type Decision, type Level } from '../../shared/ai/index.ts';
-import type { Thinker } from '../computer/pool.ts';
+import type { Thinker } from '../workers/pool.ts';
 import { computerName, decisionSeed, fallbackDecision, looksLikeComputer } from '../computer/player.ts';
 import { PointSchema, ShotSchema, type ShotInput } from '../../shared/protocol/index.ts';
 import * as v from 'valibot';

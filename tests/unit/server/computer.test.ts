@@ -1,22 +1,24 @@
 // The computer on the server, piece by piece: the pause's default, the worker pool (the same
-// decision as chooseShot in-process, no file left behind, a budget that gives up), the fallback stroke (legal), the
-// seed (deterministic), and the service playing a fallback when the thinker fails.
+// decision as chooseShot in-process, no file left behind, a budget that gives up, practice runs
+// scored as in-process), the fallback stroke (legal), the seed (deterministic), and the service
+// playing a fallback when the thinker fails.
 import fc from 'fast-check';
 import { readdirSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { afterEach, describe, expect, it } from 'vitest';
 import { COMPUTER_PAUSE_MS, readConfig } from '../../../server/config.ts';
-import { ComputerPool } from '../../../server/computer/pool.ts';
+import { IN_PROCESS, WorkerPool } from '../../../server/workers/pool.ts';
+import { RefusedTask } from '../../../server/workers/tasks.ts';
 import { decisionSeed, fallbackDecision } from '../../../server/computer/player.ts';
 import type { Delivery } from '../../../server/game/service.ts';
 import { chooseShot } from '../../../shared/ai/index.ts';
 import type { ServerMessage } from '../../../shared/protocol/index.ts';
-import { newGame, playShot } from '../../../shared/rules/index.ts';
+import { newGame, playShot, practiceStart, type PracticeShot } from '../../../shared/rules/index.ts';
 import { last, openHarness, type Harness } from '../../support/service-harness.ts';
 
 const KINDS = ['nineball', 'eightball', 'snooker', 'threecushion'] as const;
 
-let pool: ComputerPool | undefined;
+let pool: WorkerPool | undefined;
 let harness: Harness | undefined;
 afterEach(async () => {
   await pool?.close();
@@ -39,7 +41,7 @@ describe('the computer on the server', () => {
   it('thinks in worker threads to the same decision as chooseShot in-process, and gives up past its budget', async () => {
     const temporary = () => readdirSync(tmpdir()).filter((f) => f.startsWith('baize-computer-')).sort();
     const before = temporary();
-    pool = new ComputerPool({ size: 2, budgetMs: 20_000, log: () => {} });
+    pool = new WorkerPool({ size: 2, budgetMs: 20_000, log: () => {} });
     const games = KINDS.map((k) => newGame(k, ['a', 'b'], { seed: 5 }));
     const decisions = await Promise.all(games.map((game) => pool!.think({ game, level: 1, seed: 9 })));
     expect(decisions).toEqual(games.map((game) => JSON.parse(JSON.stringify(chooseShot(game, { level: 1, seed: 9 })))));
@@ -47,12 +49,36 @@ describe('the computer on the server', () => {
     expect(temporary()).toEqual(before);
     await pool.close();
     const logged: string[] = [];
-    pool = new ComputerPool({ size: 1, budgetMs: 1, log: (l) => logged.push(l) });
+    pool = new WorkerPool({ size: 1, budgetMs: 1, log: (l) => logged.push(l) });
     await expect(pool.think({ game: newGame('snooker', ['a', 'b'], { seed: 1 }), level: 5, seed: 1 })).rejects.toThrow(/longer than 1 ms/);
     // A refused question (a finished game) is an error, not a crash, and the pool answers on.
     const over = { ...newGame('nineball', ['a', 'b'], { seed: 1 }), winner: 'a' };
     await expect(pool.think({ game: over, level: 1, seed: 1 })).rejects.toThrow();
     expect(logged.join('\n')).toMatch(/longer than 1 ms/);
+  }, 60_000);
+
+  it('replays practice runs in the same workers: the in-process score, and a bad shot refused', async () => {
+    pool = new WorkerPool({ size: 1, budgetMs: 20_000, log: () => {} });
+    // A snooker run from the computer's own strokes: the break-off and on while it stays at the table.
+    let game = practiceStart('snooker', 'me', 7);
+    const shots: PracticeShot[] = [];
+    for (let i = 0; i < 3 && game.winner === null && game.turn === 'me'; i++) {
+      const d = chooseShot(game, { level: 2, seed: i });
+      if (!('shot' in d)) break;
+      const { player: _, ...shot } = d.shot;
+      shots.push(d.cueBall ? { shot, cueBall: d.cueBall } : { shot });
+      game = playShot(game, d.shot, d.cueBall).game;
+    }
+    const task = { kind: 'snooker' as const, player: 'me', seed: 7, shots };
+    const local = await IN_PROCESS.scorePractice(task);
+    expect(await pool.scorePractice(task)).toEqual(local);
+    expect(local.shots).toBe(shots.length);
+    // A shot after the run ended, or one the physics refuses: the task is refused, not a crash.
+    const late = [...shots, ...shots, ...shots, ...shots];
+    await expect(pool.scorePractice({ ...task, shots: late })).rejects.toBeInstanceOf(RefusedTask);
+    await expect(pool.scorePractice({ ...task, shots: [{ shot: { ball: 'cue', heading: 0, speed: 1e9, side: 0, top: 0 } }] })).rejects.toBeInstanceOf(RefusedTask);
+    // And the pool thinks on after them.
+    expect(await pool.think({ game: newGame('nineball', ['a', 'b'], { seed: 2 }), level: 1, seed: 3 })).toBeDefined();
   }, 60_000);
 
   it('seeds each decision from the room and the state: the same inputs, the same seed', () => {

@@ -1,25 +1,30 @@
-// A small pool of worker threads where the computer thinks, so that a search of thousands of
-// simulations never runs on the event loop. The worker is bundled by esbuild on the first task (Node's
-// workers do not inherit tsx's loader), which works alike under `node --import tsx` and npm start.
-// A task that runs past its budget has its worker terminated (and replaced) and is rejected; so is
-// a task whose worker crashes. Callers play a fallback then.
+// A small pool of worker threads for the heavy work (tasks.ts): the computer's search of thousands
+// of simulations and the replay of practice runs never run on the event loop. The worker is bundled
+// by esbuild on the first task (Node's workers do not inherit tsx's loader), which works alike under
+// `node --import tsx` and npm start. A task that runs past its budget has its worker terminated
+// (and replaced) and is rejected; so is a task whose worker crashes. Tasks wait their turn in one
+// queue, first come first served.
 import { build } from 'esbuild';
 import { fileURLToPath } from 'node:url';
 import { Worker } from 'node:worker_threads';
-import type { Decision, Level } from '../../shared/ai/index.ts';
-import type { Game } from '../../shared/rules/index.ts';
-
-export interface ThinkTask {
-  readonly game: Game;
-  readonly level: Level;
-  readonly seed: number;
-}
+import type { Decision } from '../../shared/ai/index.ts';
+import { RefusedTask, runTask, type PracticeScore, type PracticeTask, type Task, type ThinkTask } from './tasks.ts';
 
 /** What the game service needs of the pool (a fake in unit tests). */
 export interface Thinker {
-  think(task: ThinkTask): Promise<Decision>;
+  think(task: Omit<ThinkTask, 'type'>): Promise<Decision>;
   close(): Promise<void>;
 }
+
+/** What the API needs of the pool: a practice run replayed and scored (RefusedTask for a bad shot). */
+export interface PracticeScorer {
+  scorePractice(task: Omit<PracticeTask, 'type'>): Promise<PracticeScore>;
+}
+
+/** Practice runs scored on the calling thread: for tests and tools that start no pool. */
+export const IN_PROCESS: PracticeScorer = {
+  scorePractice: async (task) => runTask({ type: 'practice', ...task }) as PracticeScore,
+};
 
 export interface PoolOptions {
   /** Worker threads. */
@@ -31,8 +36,8 @@ export interface PoolOptions {
 
 interface Pending {
   readonly id: number;
-  readonly task: ThinkTask;
-  resolve(d: Decision): void;
+  readonly task: Task;
+  resolve(result: unknown): void;
   reject(e: Error): void;
 }
 
@@ -55,7 +60,7 @@ async function bundleWorker(): Promise<URL> {
   return new URL(`data:text/javascript;base64,${Buffer.from(out.outputFiles[0]!.contents).toString('base64')}`);
 }
 
-export class ComputerPool implements Thinker {
+export class WorkerPool implements Thinker, PracticeScorer {
   private readonly slots: Slot[] = [];
   private readonly queue: Pending[] = [];
   private nextId = 1;
@@ -68,7 +73,7 @@ export class ComputerPool implements Thinker {
     this.log = options.log ?? ((line) => console.error(line));
   }
 
-  /** Builds the worker and starts the threads on the first task: a server nobody plays the computer on keeps neither. */
+  /** Builds the worker and starts the threads on the first task: a server given no heavy work keeps neither. */
   private start(): void {
     if (this.started) return;
     this.started = true;
@@ -79,7 +84,7 @@ export class ComputerPool implements Thinker {
         this.pump();
       },
       (err: unknown) => {
-        this.log(`computer: the worker could not be built: ${(err as Error).message}`);
+        this.log(`workers: the worker could not be built: ${(err as Error).message}`);
         for (const p of this.queue.splice(0)) p.reject(new Error('no worker'));
       },
     );
@@ -90,10 +95,18 @@ export class ComputerPool implements Thinker {
     return this.queue.length + this.slots.filter((s) => s.busy).length;
   }
 
-  think(task: ThinkTask): Promise<Decision> {
+  think(task: Omit<ThinkTask, 'type'>): Promise<Decision> {
+    return this.run({ type: 'think', ...task }) as Promise<Decision>;
+  }
+
+  scorePractice(task: Omit<PracticeTask, 'type'>): Promise<PracticeScore> {
+    return this.run({ type: 'practice', ...task }) as Promise<PracticeScore>;
+  }
+
+  private run(task: Task): Promise<unknown> {
     if (this.closed) return Promise.reject(new Error('the pool is closed'));
     this.start();
-    return new Promise<Decision>((resolve, reject) => {
+    return new Promise<unknown>((resolve, reject) => {
       this.queue.push({ id: this.nextId++, task, resolve, reject });
       this.pump();
     });
@@ -115,13 +128,13 @@ export class ComputerPool implements Thinker {
   private spawn(): Slot {
     const slot: Slot = { worker: new Worker(this.file!), busy: null };
     slot.worker.unref();
-    slot.worker.on('message', (m: { id: number; decision?: Decision; error?: string }) => {
+    slot.worker.on('message', (m: { id: number; result?: unknown; error?: string; refused?: boolean }) => {
       const p = slot.busy;
       if (!p || p.id !== m.id) return;
       clearTimeout(slot.timer);
       slot.busy = null;
-      if (m.decision) p.resolve(m.decision);
-      else p.reject(new Error(m.error ?? 'no decision'));
+      if (m.error === undefined) p.resolve(m.result);
+      else p.reject(m.refused ? new RefusedTask(m.error) : new Error(m.error));
       this.pump();
     });
     slot.worker.on('error', (err) => this.replace(slot, `crashed: ${err.message}`));
@@ -140,7 +153,7 @@ export class ComputerPool implements Thinker {
     slot.busy = null;
     this.slots.splice(i, 1);
     void slot.worker.terminate();
-    this.log(`computer: a worker ${why}`);
+    this.log(`workers: a worker ${why}`);
     p?.reject(new Error(`the worker ${why}`));
     // A worker given up for its budget is replaced at once; one that crashed a second later, so
     // that a worker failing as it starts cannot spin.
@@ -163,7 +176,7 @@ export class ComputerPool implements Thinker {
       slot.timer = setTimeout(() => this.replace(slot, `took longer than ${this.options.budgetMs} ms`, true), this.options.budgetMs);
       slot.timer.unref();
       try {
-        slot.worker.postMessage({ id: p.id, ...p.task });
+        slot.worker.postMessage({ id: p.id, task: p.task });
       } catch (err) {
         // A task that cannot be sent (not plain data) frees its worker at once.
         clearTimeout(slot.timer);
