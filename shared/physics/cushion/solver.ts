@@ -160,42 +160,12 @@ export class CushionSolver {
         if (d < step) step = d;
       }
       if (model.I.mode === SLIDE && !model.I.slaved) {
-        let ex = model.I.slipX(y);
-        const ey = model.I.slipY(y);
-        if (model.C.mode === STICK && ex !== 0 && Math.abs(ex) <= PIN_FRACTION * Math.abs(ey) && ex * model.I.rateX(rk.k1) < 0) {
-          // With C rolling, a cushion slip along ±y stays so; one along it to within PIN_FRACTION
-          // whose x part shrinks is put on it (the x part into the offset), or its relaxation
-          // would bound every step.
-          model.I.offX = model.I.rawX(y);
-          ex = model.I.slipX(y);
-          model.derivative(y, rk.k1);
-        }
-        const r = Math.sqrt(ex * ex + ey * ey);
-        if (r > model.epsSlip) {
-          model.I.refX = ex / r;
-          model.I.refY = ey / r;
-          const rx = model.I.rateX(rk.k1);
-          // (A slip exactly along ±y with C rolling cannot wobble: its relaxation does not bound the step.)
-          const pinned = ex === 0 && rx === 0 && model.C.mode === STICK;
-          step = this.limitBySlip(ex, ey, r, rx, model.I.rateY(rk.k1), step, pinned ? 0 : this.relaxI);
-        } else {
-          model.I.refX = model.I.hintX;
-          model.I.refY = model.I.hintY;
-        }
+        if (this.pinAlongY()) model.derivative(y, rk.k1);
+        // (A slip exactly along ±y with C rolling cannot wobble: its relaxation does not bound the step.)
+        const pinned = model.I.slipX(y) === 0 && model.I.rateX(rk.k1) === 0 && model.C.mode === STICK;
+        step = this.startOwnDirection(model.I, step, pinned ? 0 : this.relaxI);
       }
-      if (model.C.mode === SLIDE && !model.C.slaved) {
-        const ex = model.C.slipX(y);
-        const ey = model.C.slipY(y);
-        const r = Math.sqrt(ex * ex + ey * ey);
-        if (r > model.epsSlip) {
-          model.C.refX = ex / r;
-          model.C.refY = ey / r;
-          step = this.limitBySlip(ex, ey, r, model.C.rateX(rk.k1), model.C.rateY(rk.k1), step, this.relaxC);
-        } else {
-          model.C.refX = model.C.hintX;
-          model.C.refY = model.C.hintY;
-        }
-      }
+      if (model.C.mode === SLIDE && !model.C.slaved) step = this.startOwnDirection(model.C, step, this.relaxC);
       model.I.minDot = Infinity;
       model.C.minDot = Infinity;
       const slavedI = model.I.slaved && model.I.mode === SLIDE;
@@ -422,6 +392,38 @@ export class CushionSolver {
   result(): { vx: number; vy: number; wx: number; wy: number; wz: number } {
     const { y, R } = this;
     return { vx: y[0]! + 0, vy: y[1]! + 0, wx: y[2]! / R + 0, wy: y[3]! / R + 0, wz: y[4]! / R + 0 };
+  }
+
+  /**
+   * Pinned slips: with C rolling, a cushion slip along ±y stays so; one along it to within
+   * PIN_FRACTION whose x part shrinks is put on it (the x part into the offset), or its relaxation
+   * would bound every step. True when it was put on ±y (the derivative then changes).
+   */
+  private pinAlongY(): boolean {
+    const m = this.model;
+    const ex = m.I.slipX(this.y);
+    if (!(m.C.mode === STICK && ex !== 0 && Math.abs(ex) <= PIN_FRACTION * Math.abs(m.I.slipY(this.y)) && ex * m.I.rateX(this.rk.k1) < 0)) return false;
+    m.I.offX = m.I.rawX(this.y);
+    return true;
+  }
+
+  /**
+   * A sliding contact that follows its own slip, at a step's start: its starting direction (the
+   * hint below epsSlip), and the step limited so that the slip neither passes zero, nor turns,
+   * nor relaxes too far in it (limitBySlip).
+   */
+  private startOwnDirection(ct: Contact, step: number, relax: number): number {
+    const ex = ct.slipX(this.y);
+    const ey = ct.slipY(this.y);
+    const r = Math.sqrt(ex * ex + ey * ey);
+    if (!(r > this.model.epsSlip)) {
+      ct.refX = ct.hintX;
+      ct.refY = ct.hintY;
+      return step;
+    }
+    ct.refX = ex / r;
+    ct.refY = ey / r;
+    return this.limitBySlip(ex, ey, r, ct.rateX(this.rk.k1), ct.rateY(this.rk.k1), step, relax);
   }
 
   /** A contact's slip component along its starting direction at y. */
