@@ -146,8 +146,10 @@ describe('playing the computer', () => {
     let mine: ShotMsg | undefined;
     let at = 0;
     while (me.rooms.get(room)!.game!.turn === me.player.id) {
+      // Timed from the send: the server plays the shot no earlier, however slow the reply.
+      const sent = Date.now();
       mine = await playTurn(me, room);
-      at = Date.now();
+      at = sent;
     }
     if (me.rooms.get(room)!.status === 'playing') {
       const before = me.log.length;
