@@ -39,6 +39,17 @@ export function listMigrations(dir: string): Migration[] {
   return migrations;
 }
 
+/** The migrations newer than a database at version `current`; an error if it is newer than them all. */
+export function pendingMigrations(migrations: readonly Migration[], current: number): Migration[] {
+  if (current > migrations.length) {
+    throw new MigrationError(
+      `${String(current).padStart(3, '0')}_*.sql`,
+      `the database is at schema ${current} but only ${migrations.length} migrations exist: is this build older than the database?`,
+    );
+  }
+  return migrations.filter((m) => m.version > current);
+}
+
 export function schemaVersion(db: Database): number {
   return db.pragma('user_version', { simple: true }) as number;
 }
@@ -49,17 +60,8 @@ export function schemaVersion(db: Database): number {
  * Returns the files applied.
  */
 export function migrate(db: Database, dir: string): string[] {
-  const migrations = listMigrations(dir);
-  const current = schemaVersion(db);
-  if (current > migrations.length) {
-    throw new MigrationError(
-      `${String(current).padStart(3, '0')}_*.sql`,
-      `the database is at schema ${current} but only ${migrations.length} migrations exist: is this build older than the database?`,
-    );
-  }
   const applied: string[] = [];
-  for (const m of migrations) {
-    if (m.version <= current) continue;
+  for (const m of pendingMigrations(listMigrations(dir), schemaVersion(db))) {
     const sql = readFileSync(m.path, 'utf8');
     const apply = db.transaction(() => {
       db.exec(sql);
