@@ -1,8 +1,8 @@
 // Three-cushion strength and cost of the computer: points per inning per level (innings from the
 // opening position and the positions the level's own play reaches), each level against the level
 // below and against the bots' "sound" strategy (short races with an innings cap), and decision time
-// and simulations per decision. Runnable alone:
-//   node --import tsx scripts/run-bundled.ts bench/ai/carom.ts --innings 200 --games 50 --levels 1,2,3,4,5
+// and simulations per decision. Run by bench/ai.ts:
+//   npm run bench:ai -- --only carom --innings 200 --games 50 --levels 1,2,3,4,5
 import { chooseShot as botShot } from '../../bots/strategy.ts';
 import { simulate } from '../../shared/physics/index.ts';
 import { newGame, playShot, type Game, type Shot, type ThreeCushionGame } from '../../shared/rules/index.ts';
@@ -144,28 +144,4 @@ export function caromTables(o: CaromBenchOptions, timings: CaromTiming[] = []): 
     console.log(`| ${level} | ${t.length} | ${quantile(ms, 0.5).toFixed(0)} | ${quantile(ms, 0.99).toFixed(0)} | ${quantile(sims, 0.5)} | ${quantile(sims, 0.99)} |`);
   }
   return timings;
-}
-
-function readArgs(argv: readonly string[]): CaromBenchOptions {
-  const get = (name: string, fallback: string): string => {
-    const i = argv.indexOf(`--${name}`);
-    return i >= 0 && argv[i + 1] !== undefined ? argv[i + 1]! : fallback;
-  };
-  return {
-    innings: Number(get('innings', '40')),
-    games: Number(get('games', '6')),
-    levels: get('levels', '1,2,3,4,5').split(',').map(Number),
-    raceTo: Number(get('race', '3')),
-    inningsCap: Number(get('cap', '25')),
-    budget: Number(get('budget', '300')),
-  };
-}
-
-// Alone (with --innings given), it runs and prints; imported by bench/ai.ts, it only exports.
-if (process.argv.includes('--innings')) {
-  const o = readArgs(process.argv.slice(2));
-  console.log(`# bench:ai three-cushion (${new Date().toISOString().slice(0, 10)}, Node ${process.version}; ${JSON.stringify(o)})`);
-  const t0 = performance.now();
-  caromTables(o);
-  console.log(`\n(${((performance.now() - t0) / 1000).toFixed(0)} s in all)`);
 }
