@@ -7,7 +7,7 @@ import { readOptions } from './ai/options.ts';
 import type { Timing } from './ai/play.ts';
 import { runOutTable, strengthTable } from './ai/pool.ts';
 import { snookerTables } from './ai/snooker.ts';
-import { caromTables, type CaromTiming } from './ai/carom.ts';
+import { caromTables } from './ai/carom.ts';
 
 const o = readOptions(process.argv.slice(2));
 const timings: Timing[] = [];
@@ -20,9 +20,6 @@ if (o.only.includes('pool')) {
   }
 }
 if (o.only.includes('snooker')) snookerTables(o, timings);
-if (o.only.includes('carom')) {
-  const carom: CaromTiming[] = [];
-  caromTables({ innings: o.innings, games: o.games, levels: o.levels, raceTo: 3, inningsCap: 25, budget: o.budget }, carom);
-}
+if (o.only.includes('carom')) caromTables({ innings: o.innings, games: o.games, levels: o.levels, raceTo: 3, inningsCap: 25, budget: o.budget }, timings);
 if (o.only.includes('cost')) costTable(timings);
 console.log(`\n(${((performance.now() - t0) / 1000).toFixed(0)} s in all)`);

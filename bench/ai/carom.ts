@@ -1,20 +1,13 @@
 // Three-cushion strength and cost of the computer: points per inning per level (innings from the
 // opening position and the positions the level's own play reaches), each level against the level
-// below and against the bots' "sound" strategy (short races with an innings cap), and decision time
-// and simulations per decision. Run by bench/ai.ts:
-//   npm run bench:ai -- --only carom --innings 200 --games 50 --levels 1,2,3,4,5
-import { chooseShot as botShot } from '../../bots/strategy.ts';
-import { simulate } from '../../shared/physics/index.ts';
-import { newGame, playShot, type Game, type Shot, type ThreeCushionGame } from '../../shared/rules/index.ts';
-import { chooseShot, type Level } from '../../shared/ai/index.ts';
+// below and against the bots' "sound" strategy (short races with an innings cap); its decisions'
+// times go to the shared cost table. Run by bench/ai.ts:
+//   npm run bench:ai -- --only carom,cost --innings 200 --games 50 --levels 1,2,3,4,5
+import { newGame, type Game, type ThreeCushionGame } from '../../shared/rules/index.ts';
+import type { Level } from '../../shared/ai/index.ts';
 import { Random } from '../../shared/ai/random.ts';
 import { deadline } from './options.ts';
-
-export interface CaromTiming {
-  readonly level: number;
-  readonly ms: number;
-  readonly simulations: number;
-}
+import { step, type Player, type Timing } from './play.ts';
 
 export interface CaromBenchOptions {
   readonly innings: number;
@@ -27,26 +20,14 @@ export interface CaromBenchOptions {
   readonly budget: number;
 }
 
-type Player = Level | 'sound';
-
-function decide(g: Game, who: Player, seed: number, timings: CaromTiming[]): Shot {
-  if (who === 'sound') return botShot(g, 'sound', simulate);
-  const stats = { simulations: 0, candidates: 0 };
-  const t0 = performance.now();
-  const d = chooseShot(g, { level: who, seed }, stats);
-  timings.push({ level: who, ms: performance.now() - t0, simulations: stats.simulations });
-  if (!('shot' in d)) throw new Error('three-cushion has no choices');
-  return d.shot;
-}
-
 /** Points per inning of a level playing both sides from the opening position on. */
-export function pointsPerInning(level: Level, innings: number, timings: CaromTiming[], over: () => boolean = () => false): { innings: number; points: number } {
+export function pointsPerInning(level: Level, innings: number, timings: Timing[], over: () => boolean = () => false): { innings: number; points: number } {
   let g = newGame('threecushion', ['a', 'b'], { raceTo: 100000 });
   let points = 0;
   let played = 0;
   for (let n = 0; played < innings && !over(); n++) {
     const before = g.turn;
-    g = playShot(g, decide(g, level, 7919 * n + level, timings)).game;
+    g = step(g, level, 7919 * n + level, timings);
     if (g.turn === before) points++;
     else played++;
   }
@@ -54,7 +35,7 @@ export function pointsPerInning(level: Level, innings: number, timings: CaromTim
 }
 
 /** Points per inning from seeded random layouts: each inning starts from a fresh layout. */
-export function pointsFromLayouts(level: Level, innings: number, timings: CaromTiming[], over: () => boolean = () => false): { innings: number; points: number } {
+export function pointsFromLayouts(level: Level, innings: number, timings: Timing[], over: () => boolean = () => false): { innings: number; points: number } {
   const random = new Random(424242);
   let points = 0;
   let played = 0;
@@ -74,7 +55,7 @@ export function pointsFromLayouts(level: Level, innings: number, timings: CaromT
     g = { ...g, balls };
     for (let n = 0; ; n++) {
       const before = g.turn;
-      g = playShot(g, decide(g, level, 31 * i + n, timings)).game;
+      g = step(g, level, 31 * i + n, timings);
       if (g.turn !== before) break;
       points++;
     }
@@ -83,7 +64,7 @@ export function pointsFromLayouts(level: Level, innings: number, timings: CaromT
 }
 
 /** Wins of `a` against `b` (and draws) over `games` races, the break alternating. */
-export function match(a: Player, b: Player, o: CaromBenchOptions, timings: CaromTiming[], over: () => boolean = () => false): { wins: number; draws: number; games: number } {
+export function match(a: Player, b: Player, o: CaromBenchOptions, timings: Timing[], over: () => boolean = () => false): { wins: number; draws: number; games: number } {
   let wins = 0;
   let draws = 0;
   let played = 0;
@@ -91,7 +72,7 @@ export function match(a: Player, b: Player, o: CaromBenchOptions, timings: Carom
     const players = i % 2 === 0 ? ['A', 'B'] : ['B', 'A'];
     let g = newGame('threecushion', players, { raceTo: o.raceTo, seed: i });
     for (let n = 0; g.winner === null && Math.max(...Object.values((g as ThreeCushionGame).innings)) <= o.inningsCap; n++) {
-      g = playShot(g, decide(g, g.turn === 'A' ? a : b, 1000003 * i + n, timings)).game;
+      g = step(g, g.turn === 'A' ? a : b, 1000003 * i + n, timings);
     }
     if (g.winner === 'A') wins++;
     else if (g.winner === null) draws++;
@@ -99,13 +80,8 @@ export function match(a: Player, b: Player, o: CaromBenchOptions, timings: Carom
   return { wins, draws, games: played };
 }
 
-function quantile(xs: readonly number[], q: number): number {
-  const s = [...xs].sort((x, y) => x - y);
-  return s.length === 0 ? NaN : s[Math.min(s.length - 1, Math.floor(q * s.length))]!;
-}
-
-/** Runs every table and prints it as markdown; returns the timings for a shared cost table. */
-export function caromTables(o: CaromBenchOptions, timings: CaromTiming[] = []): CaromTiming[] {
+/** Runs every table and prints it as markdown; the decisions' times go to `timings`. */
+export function caromTables(o: CaromBenchOptions, timings: Timing[]): void {
   const levels = o.levels.filter((l): l is Level => l >= 1 && l <= 5);
   console.log('\n## Three-cushion: points per inning (self-play from the opening position, positions reached in play)\n');
   console.log('| level | innings | points | points per inning |');
@@ -133,15 +109,4 @@ export function caromTables(o: CaromBenchOptions, timings: CaromTiming[] = []): 
       }
     }
   }
-  console.log('\n## Three-cushion: decision cost (every decision above; shared 2-core machine)\n');
-  console.log('| level | decisions | p50 ms | p99 ms | simulations p50 | simulations p99 |');
-  console.log('|---|---|---|---|---|---|');
-  for (const level of levels) {
-    const t = timings.filter((x) => x.level === level);
-    if (t.length === 0) continue;
-    const ms = t.map((x) => x.ms);
-    const sims = t.map((x) => x.simulations);
-    console.log(`| ${level} | ${t.length} | ${quantile(ms, 0.5).toFixed(0)} | ${quantile(ms, 0.99).toFixed(0)} | ${quantile(sims, 0.5)} | ${quantile(sims, 0.99)} |`);
-  }
-  return timings;
 }
