@@ -229,8 +229,13 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
   /** The player's answer to a choice the rules offer (pass, re-rack), then the computer's turn if it is on. */
   function humanChoice(choice: Game['choices'][number]): void {
     if (busy || !versus || game.turn !== ME) return;
+    choose(ME, choice);
+  }
+
+  /** A choice the rules offer (pass, re-rack), made by either side; then the computer's turn if it is on. */
+  function choose(player: string, choice: Game['choices'][number]): void {
     try {
-      game = decide(game, ME, choice);
+      game = decide(game, player, choice);
     } catch (err) {
       info.textContent = (err as Error).message;
       return;
@@ -267,11 +272,8 @@ export function mountPractice(root: HTMLElement, ctx: PageContext): () => void {
     const v = versus!;
     v.moves++;
     if ('choice' in d) {
-      game = decide(game, CPU, d.choice);
       busy = false;
-      info.textContent = verdictSentence(game, game.verdict!, nameOf, { me: ME });
-      refresh();
-      computerTurn();
+      choose(CPU, d.choice);
       return;
     }
     let played;
