@@ -29,7 +29,6 @@ export interface PracticeScore {
 }
 
 export type Task = ThinkTask | PracticeTask;
-export type TaskResult<T extends Task> = T extends ThinkTask ? Decision : PracticeScore;
 
 /** A task the rules or the physics refuse (a bad shot in a practice run): the caller's fault. */
 export class RefusedTask extends Error {
