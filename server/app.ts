@@ -11,7 +11,7 @@ import { loadStaticFiles } from './static-files.ts';
 import { VERSION } from './version.ts';
 import { MAX_FRAME_BYTES } from '../shared/protocol/index.ts';
 import { GameService } from './game/service.ts';
-import { Store } from './store.ts';
+import { Store } from './store/index.ts';
 import { Api } from './api/routes.ts';
 import { AddressCap } from './ws/address.ts';
 import { bindWebSocket } from './ws/binding.ts';

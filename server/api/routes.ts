@@ -5,7 +5,7 @@ import { randomBytes } from 'node:crypto';
 import type { IncomingMessage, ServerResponse } from 'node:http';
 import type { PracticeKind } from '../../shared/rules/index.ts';
 import { PROVISIONAL_RD } from '../ratings/glicko2.ts';
-import { PRACTICE_SEED_TTL_MS, PracticeSeedError, type MatchRow, type PlayerRow, type RecordEntry, type Store } from '../store.ts';
+import { PRACTICE_SEED_TTL_MS, PracticeSeedError, type MatchRow, type PlayerRow, type RecordEntry, type Store } from '../store/index.ts';
 import { hashToken } from '../tokens.ts';
 import { ApiError, IdParam, LeaderboardQuery, MatchesQuery, parse, PracticeBody, PracticeStartBody, RecordsQuery } from './params.ts';
 import { addressKey } from '../address.ts';

@@ -8,7 +8,7 @@ import { join } from 'node:path';
 import { afterEach, describe, expect, it } from 'vitest';
 import { openDatabase } from '../../../server/database.ts';
 import { listMigrations, migrate } from '../../../server/migrate.ts';
-import { PRACTICE_OPEN_SEEDS, PRACTICE_SEED_TTL_MS, PracticeSeedError, Store } from '../../../server/store.ts';
+import { PRACTICE_OPEN_SEEDS, PRACTICE_SEED_TTL_MS, PracticeSeedError, Store } from '../../../server/store/index.ts';
 import { ROOT, tempDir } from '../../support/server-process.ts';
 
 const MIGRATIONS = join(ROOT, 'migrations');

@@ -3,7 +3,7 @@
 import { join } from 'node:path';
 import { afterEach, describe, expect, it } from 'vitest';
 import { openDatabase } from '../../../server/database.ts';
-import { Store, type RoomChange } from '../../../server/store.ts';
+import { Store, type RoomChange } from '../../../server/store/index.ts';
 import { ROOT, tempDir } from '../../support/server-process.ts';
 
 const closers: (() => void)[] = [];
