@@ -4,3 +4,5 @@ export type { AsyncStore } from './contract.ts';
 export { Store } from './sqlite-sync.ts';
 export { SqliteStore } from './sqlite.ts';
 export * from './types.ts';
+export { PostgresStore, type PostgresOptions } from './postgres.ts';
+export { openStore, type OpenedStore, type StoreConfig } from './open.ts';
