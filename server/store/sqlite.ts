@@ -9,14 +9,12 @@ import type { MatchFilter, NewMatch, NewRoom, PracticeRun, RecordSource, RoomCha
 
 export class SqliteStore implements AsyncStore {
   readonly engine = 'sqlite';
-  readonly sync: Store;
-
   constructor(
     readonly db: Database,
     now: () => number = Date.now,
-  ) {
-    this.sync = new Store(db, now);
-  }
+    /** The sync Store to serve: the one the game service writes through, so that they share its caches. */
+    readonly sync: Store = new Store(db, now),
+  ) {}
 
   async playerByTokenHash(hash: Buffer) {
     return this.sync.playerByTokenHash(hash);
