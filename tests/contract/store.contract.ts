@@ -14,6 +14,10 @@ export interface StoreHarness {
   count(table: string): Promise<number>;
   /** A rating put straight into its table (an established one takes dozens of games). */
   setRating(player: number, kind: string, rating: number, rd: number): Promise<void>;
+  /** A player as stored before the name keys (migration 006): no keys. */
+  insertKeyless(name: string, tokenHash: Buffer): Promise<number>;
+  /** Holds the write lock the health probe needs (another connection's open write) until released. */
+  holdHealthLock(): Promise<() => Promise<void>>;
   close(): Promise<void>;
 }
 
@@ -89,6 +93,30 @@ export function storeContract(openStore: () => Promise<StoreHarness>): void {
     expect(await store.nameOwner('anna')).toBe(a.id);
     const c = await store.createPlayer('Ann', hash(3));
     expect(await store.nameOwner('ann')).toBe(c.id);
+  });
+
+  it('gives players from before the name keys theirs, the older keeping a key two share', async () => {
+    const { store, insertKeyless } = await fresh();
+    const old1 = await insertKeyless('Zed', hash(80));
+    const old2 = await insertKeyless('\u0396ed', hash(81)); // a Greek Zeta: its upper key is Zed's
+    const old3 = await insertKeyless('Yan', hash(82));
+    expect(await store.nameOwner('zed')).toBeUndefined(); // no keys yet
+    expect(await store.fillNameKeys()).toBe(3);
+    expect(await store.fillNameKeys()).toBe(0);
+    expect(await store.nameOwner('ZED')).toBe(old1);
+    expect(await store.nameOwner('yan')).toBe(old3);
+    // The later lookalike keeps its name and its own lower key; the shared upper key stays the older's.
+    expect(await store.playerById(old2)).toEqual({ id: old2, name: '\u0396ed' });
+    expect(await store.nameOwner('\u0396ed', old2)).toBe(old1);
+    expect(await store.nameOwner('\u0396ed', old1)).toBe(old2);
+    await expect(store.createPlayer('zed', hash(83))).rejects.toThrow();
+    await expect(store.createPlayer('YAN', hash(84))).rejects.toThrow();
+  });
+
+  it('makes one player of a name asked for twice at once', async () => {
+    const { store } = await fresh();
+    const made = await Promise.allSettled([store.createPlayer('Dee', hash(90)), store.createPlayer('DEE', hash(91))]);
+    expect(made.map((m) => m.status).sort()).toEqual(['fulfilled', 'rejected']);
   });
 
   it("makes the computer's player of a level once, however many ask at once, and never rates its matches", async () => {
@@ -270,6 +298,14 @@ export function storeContract(openStore: () => Promise<StoreHarness>): void {
     expect((await ratingOf(store, a.id, 'nineball'))!.games).toBe(5);
   });
 
+  it('writes a finish saved twice at once once', async () => {
+    const { store, a, finish } = await fresh();
+    await Promise.all([store.saveChanges(finish(true)), store.saveChanges(finish(true)), store.saveChanges(finish(true))]);
+    expect(await store.resultCount()).toBe(1);
+    expect(await ratingOf(store, a.id, 'snooker')).toMatchObject({ games: 1, wins: 1 });
+    expect(await store.records('snooker', 10, 0)).toHaveLength(1);
+  });
+
   it('holds the pair limit and loses no rating update when results are saved at once', async () => {
     const { store, a, b, play } = await fresh();
     const c = await store.createPlayer('Cid', hash(3));
@@ -342,6 +378,16 @@ export function storeContract(openStore: () => Promise<StoreHarness>): void {
     expect(await store.records('snooker', 10, 0, 'match')).toEqual([]);
   });
 
+  it('uses a practice seed once when two runs from it are saved at once', async () => {
+    const { store, a, count } = await fresh();
+    await store.issuePracticeSeed(a.id, 'snooker', 5);
+    const saved = await Promise.allSettled([store.savePractice(run(a.id, 5, 10)), store.savePractice(run(a.id, 5, 20)), store.savePractice(run(a.id, 5, 30))]);
+    expect(saved.filter((s) => s.status === 'fulfilled')).toHaveLength(1);
+    for (const s of saved) if (s.status === 'rejected') expect(s.reason).toMatchObject({ state: 'used' });
+    expect(await count('practice_runs')).toBe(1);
+    expect(await store.records('snooker', 10, 0, 'practice')).toHaveLength(1);
+  });
+
   it('expires practice seeds after their lifetime, and deletes them then, used or not', async () => {
     const { store, clock, a, count } = await fresh();
     await store.issuePracticeSeed(a.id, 'snooker', 1);
@@ -405,10 +451,21 @@ export function storeContract(openStore: () => Promise<StoreHarness>): void {
 
   // Operations.
 
-  it('proves a write, and says its schema version', async () => {
-    const { store } = await fresh();
+  it('proves a write, fails the proof while another holds the lock past the wait, and says its schema version', async () => {
+    const { store, holdHealthLock } = await fresh();
     await expect(store.probeWrite(100)).resolves.toBeUndefined();
     await expect(store.probeWrite(0)).resolves.toBeUndefined();
+    const release = await holdHealthLock();
+    const t = performance.now();
+    try {
+      await expect(store.probeWrite(200)).rejects.toThrow();
+    } finally {
+      await release();
+    }
+    const waited = performance.now() - t;
+    expect(waited).toBeGreaterThanOrEqual(150);
+    expect(waited).toBeLessThan(5000);
+    await expect(store.probeWrite(100)).resolves.toBeUndefined();
     expect(await store.schemaVersion()).toBe(SCHEMA);
   });
 }

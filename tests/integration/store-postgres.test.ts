@@ -74,6 +74,18 @@ describe.skipIf(!postgresAvailable())('the PostgreSQL store', () => {
           [kind, player, rating, rd],
         );
       },
+      insertKeyless: async (name, tokenHash) =>
+        Number((await side.query<{ id: string }>('INSERT INTO players (name, token_hash, created_at, last_seen) VALUES ($1, $2, $3, $3) RETURNING id', [name, tokenHash, clock.now])).rows[0]!.id),
+      holdHealthLock: async () => {
+        const other = new pg.Client({ connectionString: url });
+        await other.connect();
+        await other.query('BEGIN');
+        await other.query('INSERT INTO health (id, checked_at) VALUES (1, 0) ON CONFLICT (id) DO UPDATE SET checked_at = 0');
+        return async () => {
+          await other.query('ROLLBACK');
+          await other.end();
+        };
+      },
       close: async () => {
         await side.end();
         await store.close();

@@ -1,7 +1,11 @@
 // BAIZE_DATABASE_URL: unset or empty is SQLite as before; a postgres:// URL is PostgreSQL; anything
 // else is refused at start with a message that does not repeat the value (it may hold a password).
+import { existsSync } from 'node:fs';
+import { join } from 'node:path';
 import { describe, expect, it } from 'vitest';
+import { startServer } from '../../../server/app.ts';
 import { readConfig } from '../../../server/config.ts';
+import { tempDir } from '../../support/server-process.ts';
 
 describe('BAIZE_DATABASE_URL', () => {
   it('is optional: without it (or empty) the server keeps its SQLite file', () => {
@@ -28,5 +32,13 @@ describe('BAIZE_DATABASE_URL', () => {
       expect((err as Error).message).toMatch(/^BAIZE_DATABASE_URL must/);
       expect((err as Error).message).not.toContain('hunter2');
     }
+  });
+});
+
+describe('the server with BAIZE_DATABASE_URL', () => {
+  it('refuses to start until the game service runs on PostgreSQL, rather than quietly use the file', async () => {
+    const config = readConfig({ BAIZE_DATABASE_URL: 'postgres://127.0.0.1/baize', BAIZE_DB: join(tempDir(), 'never.db') });
+    await expect(startServer(config)).rejects.toThrow(/BAIZE_DATABASE_URL/);
+    expect(existsSync(config.dbPath)).toBe(false);
   });
 });

@@ -1,5 +1,6 @@
 // The store's contract (tests/contract/store.contract.ts) on SQLite: a real file in a temporary
 // folder, opened by openStore as the server opens it when BAIZE_DATABASE_URL is not set.
+import Database from 'better-sqlite3';
 import { rmSync } from 'node:fs';
 import { join } from 'node:path';
 import { describe, expect, it } from 'vitest';
@@ -22,6 +23,16 @@ describe('the SQLite store', () => {
       count: async (table) => (db.prepare(`SELECT count(*) AS n FROM ${table}`).get() as { n: number }).n,
       setRating: async (player, kind, rating, rd) => {
         db.prepare('INSERT OR REPLACE INTO ratings (kind, player_id, rating, rd, vol, games, wins, updated_at) VALUES (?, ?, ?, ?, 0.06, 30, 15, 0)').run(kind, player, rating, rd);
+      },
+      insertKeyless: async (name, tokenHash) =>
+        Number(db.prepare('INSERT INTO players (name, token_hash, created_at, last_seen) VALUES (?, ?, ?, ?)').run(name, tokenHash, clock.now, clock.now).lastInsertRowid),
+      holdHealthLock: async () => {
+        const other = new Database(join(dir, 'baize.db'));
+        other.exec('BEGIN IMMEDIATE');
+        return async () => {
+          other.exec('ROLLBACK');
+          other.close();
+        };
       },
       close: async () => {
         await store.close();
