@@ -80,24 +80,40 @@ export class PostgresStore implements AsyncStore {
     this.pool.on('error', (err) => console.error(`PostgreSQL: idle connection lost: ${err.message}`));
   }
 
+  /**
+   * Runs `fn` on a connection of its own. A connection lost meanwhile rejects the statement under
+   * way; its 'error' event, which the pool listens to only while the connection is idle, is
+   * handled here, or it would end the process. A connection that failed is closed, not reused.
+   */
+  private async withClient<T>(fn: (client: pg.PoolClient) => Promise<T>): Promise<T> {
+    const client = await this.pool.connect();
+    let lost: Error | undefined;
+    const onError = (err: Error) => {
+      lost = err;
+    };
+    client.on('error', onError);
+    try {
+      return await fn(client);
+    } finally {
+      client.removeListener('error', onError);
+      client.release(lost);
+    }
+  }
+
   /** Runs `fn` in one transaction on one connection: committed if it resolves, rolled back if not. */
   private async tx<T>(fn: (q: Queryable) => Promise<T>): Promise<T> {
-    const client = await this.pool.connect();
-    try {
+    return this.withClient(async (client) => {
       await client.query('BEGIN');
-      const value = await fn(client);
-      await client.query('COMMIT');
-      client.release();
-      return value;
-    } catch (err) {
       try {
-        await client.query('ROLLBACK');
-        client.release();
-      } catch (rollbackErr) {
-        client.release(rollbackErr as Error); // a broken connection is closed, not reused
+        const value = await fn(client);
+        await client.query('COMMIT');
+        return value;
+      } catch (err) {
+        // A rollback that fails too (the connection is gone) changes nothing: the server rolls back.
+        await client.query('ROLLBACK').catch(() => undefined);
+        throw err;
       }
-      throw err;
-    }
+    });
   }
 
   private async one<R extends pg.QueryResultRow>(q: Queryable, text: string, values: unknown[]): Promise<R | undefined> {
@@ -369,21 +385,11 @@ export class PostgresStore implements AsyncStore {
 
   /** Applies PostgreSQL's migrations from `dir` (see migratePostgres); returns the files applied. */
   async migrate(dir: string): Promise<string[]> {
-    const client = await this.pool.connect();
-    try {
-      return await migratePostgres(client, dir);
-    } finally {
-      client.release();
-    }
+    return this.withClient((client) => migratePostgres(client, dir));
   }
 
   async schemaVersion(): Promise<number> {
-    const client = await this.pool.connect();
-    try {
-      return await schemaVersionPostgres(client);
-    } finally {
-      client.release();
-    }
+    return this.withClient((client) => schemaVersionPostgres(client));
   }
 
   async close(): Promise<void> {

@@ -93,6 +93,44 @@ describe.skipIf(!postgresAvailable())('the PostgreSQL store', () => {
     };
   });
 
+  it('survives its connections killed, idle or mid-transaction: that write fails whole, the next goes through', async () => {
+    const url = await freshDatabase();
+    const name = url.slice(url.lastIndexOf('/') + 1);
+    const { store } = await openStore({ dbPath: 'unused', migrationsDir: MIGRATIONS, databaseUrl: url });
+    const other = new pg.Client({ connectionString: url });
+    await other.connect();
+    const errors: string[] = [];
+    const log = console.error;
+    console.error = (...args: unknown[]) => void errors.push(args.join(' '));
+    try {
+      const a = await store.createPlayer('Ann', Buffer.alloc(32, 1));
+      // The store's transaction waits for a row lock that another connection holds; then it is killed.
+      await other.query('BEGIN');
+      await other.query('INSERT INTO health (id, checked_at) VALUES (1, 0)');
+      const probe = store.probeWrite(30_000);
+      let pid: number | undefined;
+      for (let i = 0; i < 200 && pid === undefined; i++) {
+        const waiting = await admin((c) => c.query<{ pid: number }>("SELECT pid FROM pg_stat_activity WHERE datname = $1 AND wait_event_type = 'Lock'", [name]));
+        pid = waiting.rows[0]?.pid;
+        if (pid === undefined) await new Promise((r) => setTimeout(r, 25));
+      }
+      expect(pid).toBeDefined();
+      await admin((c) => c.query('SELECT pg_terminate_backend($1)', [pid]));
+      await expect(probe).rejects.toThrow();
+      await other.query('ROLLBACK');
+      await expect(store.probeWrite(1000)).resolves.toBeUndefined();
+      // Every idle connection of the store killed: the pool opens new ones.
+      await admin((c) => c.query('SELECT pg_terminate_backend(pid) FROM pg_stat_activity WHERE datname = $1 AND pid <> $2', [name, (other as unknown as { processID: number }).processID]));
+      await new Promise((r) => setTimeout(r, 100));
+      expect(await store.playerById(a.id)).toEqual(a);
+      await store.saveChanges();
+    } finally {
+      console.error = log;
+      await other.end();
+      await store.close();
+    }
+  });
+
   it('refuses to open a database newer than the build, and leaves no connection open', async () => {
     const url = await freshDatabase();
     const c = new pg.Client({ connectionString: url });
