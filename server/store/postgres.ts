@@ -232,6 +232,8 @@ export class PostgresStore implements AsyncStore {
   }
 
   private async applyChanges(q: Queryable, changes: readonly RoomChange[]): Promise<void> {
+    // Every result's players locked first, all in one order: two saves never wait on each other in a circle.
+    await this.lockPlayers(q, ...changes.flatMap((c) => (c.result ? [c.result.winner, c.result.loser] : [])));
     const now = this.now();
     for (const c of changes) {
       if (c.action) await q.query(SQL.insertAction, [c.action.matchId, c.action.seq, c.action.json, now]);
@@ -242,11 +244,10 @@ export class PostgresStore implements AsyncStore {
 
   /**
    * A match's result, its ratings and its records, written once inside the caller's transaction
-   * (see Store.finish). The two players' locks make the pair's daily limit and each rating's
-   * read-then-write hold however results of other processes interleave.
+   * (see Store.finish). The two players' locks (taken by applyChanges) make the pair's daily limit
+   * and each rating's read-then-write hold however results of other processes interleave.
    */
   private async finish(q: Queryable, r: MatchResult, now: number): Promise<void> {
-    await this.lockPlayers(q, r.winner, r.loser);
     let unrated: UnratedReason | null = r.rated ? null : (r.unrated ?? 'few-shots');
     if ((await this.one<{ n: number }>(q, SQL.computersAmong, [r.winner, r.loser]))!.n > 0) unrated = 'computer';
     if (unrated === null && (await this.one<{ n: number }>(q, SQL.pairRated, [r.winner, r.loser, r.kind, now - DAY_MS]))!.n >= RATED_PER_PAIR_PER_DAY) unrated = 'pair-limit';

@@ -306,6 +306,23 @@ export function storeContract(openStore: () => Promise<StoreHarness>): void {
     expect(await store.records('snooker', 10, 0)).toHaveLength(1);
   });
 
+  it('saves results of the same players in opposite orders at once, without a deadlock', async () => {
+    const { store, a, b } = await fresh();
+    const c = await store.createPlayer('Cid', hash(3));
+    const d = await store.createPlayer('Dee', hash(4));
+    const result = async (kind: string, winner: number, loser: number): Promise<RoomChange> => {
+      const matchId = await store.createMatch({ roomId: 'r1', kind, raceTo: 1, player1: winner, player2: loser, seed: 1, start: '{}' });
+      return { roomId: 'r1', status: 'over', state: '{}', result: { matchId, kind, winner, loser, how: 'played', scores: '{}', rated: true, records: [] } };
+    };
+    for (const kind of ['nineball', 'eightball', 'snooker']) {
+      const one = [await result(kind, a.id, b.id), await result(kind, c.id, d.id)];
+      const two = [await result(kind, d.id, c.id), await result(kind, b.id, a.id)];
+      await Promise.all([store.saveChanges(...one), store.saveChanges(...two)]);
+    }
+    expect(await store.resultCount()).toBe(12);
+    for (const p of [a, b, c, d]) expect((await store.ratingsOf(p.id)).map((r) => r.games)).toEqual([2, 2, 2]);
+  });
+
   it('holds the pair limit and loses no rating update when results are saved at once', async () => {
     const { store, a, b, play } = await fresh();
     const c = await store.createPlayer('Cid', hash(3));
