@@ -16,6 +16,7 @@ import {
   PRACTICE_SEED_TTL_MS,
   PracticeSeedError,
   SEED_SWEEP_MS,
+  StaleRoomError,
   type ActionRow,
   type BoardRow,
   type IdlePage,
@@ -236,9 +237,12 @@ export class PostgresStore implements AsyncStore {
     await this.lockPlayers(q, ...changes.flatMap((c) => (c.result ? [c.result.winner, c.result.loser] : [])));
     const now = this.now();
     for (const c of changes) {
+      // The room's row first: a writer that waited for another's row lock then finds the stateId
+      // moved on, and is refused before it tries its action (see RoomChange.expectStateId).
+      if (c.expectStateId === undefined) await q.query(SQL.updateRoom, [c.status, c.state, now, c.roomId]);
+      else if ((await q.query(SQL.updateRoomAt, [c.status, c.state, now, c.roomId, c.expectStateId])).rowCount !== 1) throw new StaleRoomError(c.roomId, c.expectStateId);
       if (c.action) await q.query(SQL.insertAction, [c.action.matchId, c.action.seq, c.action.json, now]);
       if (c.result) await this.finish(q, c.result, now);
-      await q.query(SQL.updateRoom, [c.status, c.state, now, c.roomId]);
     }
   }
 

@@ -11,6 +11,7 @@ import {
   PRACTICE_SEED_TTL_MS,
   PracticeSeedError,
   SEED_SWEEP_MS,
+  StaleRoomError,
   type BoardRow,
   type IdlePage,
   type MatchResult,
@@ -85,6 +86,9 @@ export class Store {
         'INSERT INTO rooms (id, kind, race_to, private, shot_clock, created_by, created_at, status, state, updated_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)',
       ),
       updateRoom: db.prepare<[string, string, number, string]>('UPDATE rooms SET status = ?, state = ?, updated_at = ? WHERE id = ?'),
+      updateRoomAt: db.prepare<[string, string, number, string, number]>(
+        "UPDATE rooms SET status = ?, state = ?, updated_at = ? WHERE id = ? AND json_extract(state, '$.stateId') = ?",
+      ),
       openRooms: db.prepare<[], RoomRow>("SELECT id, status, state FROM rooms WHERE status IN ('waiting', 'playing', 'over') ORDER BY created_at, id"),
       insertMatch: db.prepare<[string, string, number, number, number, number, string, number]>(
         'INSERT INTO matches (room_id, kind, race_to, player1, player2, seed, start, started_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?)',
@@ -313,14 +317,19 @@ export class Store {
     return Number(info.lastInsertRowid);
   }
 
-  /** Changes of rooms, their actions and any results, in one transaction. */
+  /**
+   * Changes of rooms, their actions and any results, in one transaction. A room not at the
+   * stateId its change expects refuses the whole save (StaleRoomError); its row is written first,
+   * so that the refusal comes before any action or result is tried.
+   */
   saveChanges(...changes: RoomChange[]): void {
     this.db.transaction(() => {
       const now = this.now();
       for (const c of changes) {
+        if (c.expectStateId === undefined) this.s.updateRoom.run(c.status, c.state, now, c.roomId);
+        else if (this.s.updateRoomAt.run(c.status, c.state, now, c.roomId, c.expectStateId).changes !== 1) throw new StaleRoomError(c.roomId, c.expectStateId);
         if (c.action) this.s.insertAction.run(c.action.matchId, c.action.seq, c.action.json, now);
         if (c.result) this.finish(c.result, now);
-        this.s.updateRoom.run(c.status, c.state, now, c.roomId);
       }
     })();
   }

@@ -76,6 +76,22 @@ export interface RoomChange {
   readonly state: string;
   readonly action?: { readonly matchId: number; readonly seq: number; readonly json: string };
   readonly result?: MatchResult;
+  /**
+   * The stateId the stored room must be at (its state's `stateId`) for this change to be written:
+   * the one its writer read. Otherwise the whole save is refused with a StaleRoomError and nothing
+   * is written, so that of two writers of one room only the first commits. Unset: no check.
+   */
+  readonly expectStateId?: number;
+}
+
+/** Thrown by saveChanges and startMatch when a room is not at the stateId a change expects; nothing is written. */
+export class StaleRoomError extends Error {
+  constructor(
+    readonly roomId: string,
+    readonly expected: number,
+  ) {
+    super(`room ${roomId} is no longer at stateId ${expected}: another writer changed it first`);
+  }
 }
 
 /** Where a record comes from: a finished match, or a practice run. */

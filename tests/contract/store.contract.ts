@@ -4,7 +4,7 @@
 // must answer each of these alike.
 import fc from 'fast-check';
 import { afterEach, expect, it } from 'vitest';
-import { PRACTICE_OPEN_SEEDS, PRACTICE_SEED_TTL_MS, PracticeSeedError, type AsyncStore, type PlayerRow, type RoomChange } from '../../server/store/index.ts';
+import { PRACTICE_OPEN_SEEDS, PRACTICE_SEED_TTL_MS, PracticeSeedError, StaleRoomError, type AsyncStore, type PlayerRow, type RoomChange } from '../../server/store/index.ts';
 
 export interface StoreHarness {
   readonly store: AsyncStore;
@@ -184,6 +184,38 @@ export function storeContract(openStore: () => Promise<StoreHarness>): void {
     // An action's place in the log is taken once.
     await expect(store.saveChanges({ roomId: 'r1', status: 'playing', state: '{"v":5}', action: { matchId: match, seq: 4, json: '{}' } })).rejects.toThrow();
     expect((await store.openRooms())[0]!.state).toBe('{"v":4}');
+  });
+
+  it('writes a room change only when the room is at the stateId it expects; else nothing of the save', async () => {
+    const { store, a, b } = await fresh();
+    await store.createRoom({ id: 'r3', kind: 'nineball', raceTo: 1, private: false, shotClock: 0, createdBy: a.id, status: 'playing', state: '{"stateId":0}' });
+    const match = await store.createMatch({ roomId: 'r3', kind: 'nineball', raceTo: 1, player1: a.id, player2: b.id, seed: 1, start: '{}' });
+    const at = (stateId: number, expect: number, extra: object = {}): RoomChange => ({
+      roomId: 'r3', status: 'playing', state: JSON.stringify({ stateId, ...extra }), expectStateId: expect,
+      action: { matchId: match, seq: stateId, json: JSON.stringify({ type: 'shot', player: String(a.id) }) },
+    });
+    const stateOf = async (id: string) => (await store.openRooms()).find((r) => r.id === id)?.state;
+    await store.saveChanges(at(1, 0));
+    const stale = await store.saveChanges(at(1, 0, { other: true })).catch((err: unknown) => err);
+    expect(stale).toBeInstanceOf(StaleRoomError);
+    expect(stale).toMatchObject({ roomId: 'r3', expected: 0 });
+    // Nothing of a refused save: not the other room's change before it, not its action.
+    await expect(store.saveChanges({ roomId: 'r1', status: 'playing', state: '{"v":1}' }, at(2, 0))).rejects.toThrow(StaleRoomError);
+    expect(await stateOf('r1')).toBe('{"v":0}');
+    expect(await stateOf('r3')).toBe('{"stateId":1}');
+    expect((await store.matchActions(match)).map((x) => x.seq)).toEqual([1]);
+    await store.saveChanges(at(2, 1));
+    // A room that does not exist, or whose state has no stateId, is at no stateId.
+    await expect(store.saveChanges({ ...at(3, 2), roomId: 'nowhere' })).rejects.toThrow(StaleRoomError);
+    await expect(store.saveChanges({ roomId: 'r1', status: 'over', state: '{}', expectStateId: 0 })).rejects.toThrow(StaleRoomError);
+    // Of two writers that read the room at the same stateId and save at once, one commits.
+    const both = await Promise.allSettled([store.saveChanges(at(3, 2, { by: 'one' })), store.saveChanges(at(3, 2, { by: 'two' }))]);
+    expect(both.map((s) => s.status).sort()).toEqual(['fulfilled', 'rejected']);
+    const lost = both.find((s) => s.status === 'rejected') as PromiseRejectedResult;
+    expect(lost.reason).toBeInstanceOf(StaleRoomError);
+    const won = both.findIndex((s) => s.status === 'fulfilled');
+    expect(JSON.parse((await stateOf('r3'))!)).toEqual({ stateId: 3, by: won === 0 ? 'one' : 'two' });
+    expect((await store.matchActions(match)).map((x) => x.seq)).toEqual([1, 2, 3]);
   });
 
   it('starts a match with its room change in one transaction: a failing change leaves no match', async () => {
