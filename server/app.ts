@@ -67,8 +67,10 @@ export async function startServer(config: Config): Promise<RunningServer> {
     throw err;
   }
   const files = loadStaticFiles(config.clientDir);
-  const health = healthCheck({ version: VERSION, schema: () => schemaVersion(db), probeWrite: () => store.probeWrite(HEALTH_LOCK_WAIT_MS) });
-  const api = new Api(new SqliteStore(db, Date.now, store), { perPlayer: config.practicePerMinute, perAddress: config.practicePerAddressPerMinute }, workers);
+  // The HTTP side (health, API) goes through the asynchronous contract, over the service's Store.
+  const reads = new SqliteStore(db, Date.now, store);
+  const health = healthCheck({ version: VERSION, schema: () => reads.schemaVersion(), probeWrite: () => reads.probeWrite(HEALTH_LOCK_WAIT_MS) });
+  const api = new Api(reads, { perPlayer: config.practicePerMinute, perAddress: config.practicePerAddressPerMinute }, workers);
   const loop = config.eventLoopStats ? eventLoopStats() : undefined;
   const handler = createRequestHandler(files, health, api, loop);
   // Slow requests hold a socket each: headers and whole requests have deadlines (answered 408),
