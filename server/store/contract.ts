@@ -58,6 +58,8 @@ export interface AsyncStore {
   startMatch(m: NewMatch, change: (matchId: number) => RoomChange): Promise<number>;
   /** Rooms not closed, oldest first: what a restart brings back. */
   openRooms(): Promise<RoomRow[]>;
+  /** One room as last committed, closed or not: what a process taking the room over starts from. */
+  room(id: string): Promise<RoomRow | undefined>;
   matchActions(matchId: number): Promise<ActionRow[]>;
   /** Shots each player has played in a match, from its log. */
   shotCounts(matchId: number): Promise<Map<string, number>>;

@@ -282,6 +282,10 @@ export class PostgresStore implements AsyncStore {
     return this.all<RoomRow>(this.pool, SQL.openRooms, []);
   }
 
+  async room(id: string): Promise<RoomRow | undefined> {
+    return this.one<RoomRow>(this.pool, SQL.room, [id]);
+  }
+
   async matchActions(matchId: number): Promise<ActionRow[]> {
     const rows = await this.all<{ seq: number; action: string }>(this.pool, SQL.actions, [matchId]);
     return rows.map((r) => ({ seq: r.seq, action: JSON.parse(r.action) as unknown }));

@@ -89,6 +89,7 @@ export class Store {
       updateRoomAt: db.prepare<[string, string, number, string, number]>(
         "UPDATE rooms SET status = ?, state = ?, updated_at = ? WHERE id = ? AND json_extract(state, '$.stateId') = ?",
       ),
+      room: db.prepare<[string], RoomRow>('SELECT id, status, state FROM rooms WHERE id = ?'),
       openRooms: db.prepare<[], RoomRow>("SELECT id, status, state FROM rooms WHERE status IN ('waiting', 'playing', 'over') ORDER BY created_at, id"),
       insertMatch: db.prepare<[string, string, number, number, number, number, string, number]>(
         'INSERT INTO matches (room_id, kind, race_to, player1, player2, seed, start, started_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?)',
@@ -371,6 +372,11 @@ export class Store {
   /** Rooms not closed, oldest first: what a restart brings back. */
   openRooms(): RoomRow[] {
     return this.s.openRooms.all();
+  }
+
+  /** One room as last committed, closed or not. */
+  room(id: string): RoomRow | undefined {
+    return this.s.room.get(id);
   }
 
   matchActions(matchId: number): { seq: number; action: unknown }[] {

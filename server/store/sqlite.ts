@@ -61,6 +61,9 @@ export class SqliteStore implements AsyncStore {
   async openRooms() {
     return this.sync.openRooms();
   }
+  async room(id: string) {
+    return this.sync.room(id);
+  }
   async matchActions(matchId: number) {
     return this.sync.matchActions(matchId);
   }

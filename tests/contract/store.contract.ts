@@ -175,6 +175,9 @@ export function storeContract(openStore: () => Promise<StoreHarness>): void {
       { id: 'r1', status: 'playing', state: '{"v":4}' },
       { id: 'r0', status: 'waiting', state: '{"w":1}' },
     ]);
+    expect(await store.room('r2')).toEqual({ id: 'r2', status: 'closed', state: '{"closed":true}' });
+    expect(await store.room('r1')).toEqual({ id: 'r1', status: 'playing', state: '{"v":4}' });
+    expect(await store.room('nowhere')).toBeUndefined();
     expect((await store.matchActions(match)).map((x) => x.seq)).toEqual([1, 2, 3, 4]);
     expect((await store.matchActions(match))[3]).toEqual({ seq: 4, action: { type: 'concede', player: String(b.id) } });
     expect(await store.shotCounts(match)).toEqual(new Map([[String(a.id), 2], [String(b.id), 1]]));
