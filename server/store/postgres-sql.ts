@@ -43,6 +43,13 @@ export const SQL = {
   updateRoom: 'UPDATE rooms SET status = $1, state = $2, updated_at = $3 WHERE id = $4',
   // jsonb compares numbers by value, and a state without a stateId matches nothing (no cast fails).
   updateRoomAt: `UPDATE rooms SET status = $1, state = $2, updated_at = $3 WHERE id = $4 AND state::jsonb -> 'stateId' = to_jsonb($5::bigint)`,
+  // The same with the stateId optional ($5 null: no check), and a move in one statement: the action
+  // is inserted when the room's guarded row was updated (unguarded, always, as in saveChanges).
+  updateRoomIf: `UPDATE rooms SET status = $1, state = $2, updated_at = $3 WHERE id = $4 AND ($5::bigint IS NULL OR state::jsonb -> 'stateId' = to_jsonb($5::bigint))`,
+  move: `WITH room AS (
+       UPDATE rooms SET status = $1, state = $2, updated_at = $3 WHERE id = $4 AND ($5::bigint IS NULL OR state::jsonb -> 'stateId' = to_jsonb($5::bigint))
+       RETURNING id)
+     INSERT INTO match_actions (match_id, seq, action, created_at) SELECT $6, $7, $8, $3 WHERE $5::bigint IS NULL OR EXISTS (SELECT 1 FROM room)`,
   room: 'SELECT id, status, state FROM rooms WHERE id = $1',
   openRooms: `SELECT id, status, state FROM rooms WHERE status IN ('waiting', 'playing', 'over') ORDER BY created_at, id COLLATE "C"`,
   insertMatch: 'INSERT INTO matches (room_id, kind, race_to, player1, player2, seed, start, started_at) VALUES ($1, $2, $3, $4, $5, $6, $7, $8) RETURNING id',

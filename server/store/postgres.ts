@@ -229,7 +229,23 @@ export class PostgresStore implements AsyncStore {
   }
 
   async saveChanges(...changes: RoomChange[]): Promise<void> {
-    await this.tx((q) => this.applyChanges(q, changes));
+    const only = changes.length === 1 ? changes[0]! : undefined;
+    if (only && !only.result) await this.move(only);
+    else await this.tx((q) => this.applyChanges(q, changes));
+  }
+
+  /**
+   * A room change with at most an action, the write of every shot: one statement, so one round
+   * trip and its own transaction. A guarded action is inserted only when the room's row was, so a
+   * stale room writes neither; an action refused (its place in the log taken) undoes the room's.
+   */
+  private async move(c: RoomChange): Promise<void> {
+    const now = this.now();
+    const expect = c.expectStateId ?? null;
+    const written = c.action
+      ? await this.pool.query(SQL.move, [c.status, c.state, now, c.roomId, expect, c.action.matchId, c.action.seq, c.action.json])
+      : await this.pool.query(SQL.updateRoomIf, [c.status, c.state, now, c.roomId, expect]);
+    if (c.expectStateId !== undefined && written.rowCount !== 1) throw new StaleRoomError(c.roomId, c.expectStateId);
   }
 
   private async applyChanges(q: Queryable, changes: readonly RoomChange[]): Promise<void> {
