@@ -311,6 +311,37 @@ export function storeContract(openStore: () => Promise<StoreHarness>): void {
     ]);
   });
 
+  it('pages the leaderboard without gaps or repeats: the pages make the board, best first, ties by id (property)', async () => {
+    const { store, setRating } = await fresh();
+    const ids: number[] = [];
+    for (let i = 0; i < 24; i++) ids.push((await store.createPlayer(`Board${i}`, hash(100 + i))).id);
+    let round = 0;
+    await fc.assert(
+      fc.asyncProperty(
+        fc.array(fc.record({ who: fc.integer({ min: 0, max: 23 }), rating: fc.integer({ min: 1400, max: 1410 }), rd: fc.constantFrom(50, 109.5, 110, 200) }), { maxLength: 24 }),
+        fc.integer({ min: 1, max: 7 }),
+        async (ratings, size) => {
+          // A kind of its own each round (ratings' kinds are free text), so rounds do not meet.
+          const kind = `board${++round}`;
+          const latest = new Map<number, { rating: number; rd: number }>();
+          for (const r of ratings) {
+            await setRating(ids[r.who]!, kind, r.rating, r.rd);
+            latest.set(ids[r.who]!, { rating: r.rating, rd: r.rd });
+          }
+          const expected = [...latest].filter(([, r]) => r.rd < 110).sort(([a, x], [b, y]) => y.rating - x.rating || a - b).map(([id]) => id);
+          const paged: number[] = [];
+          for (let offset = 0; offset <= expected.length; offset += size) {
+            const page = await store.leaderboard(kind, size, offset);
+            expect(page.total).toBe(expected.length);
+            paged.push(...page.rows.map((r) => r.id));
+          }
+          expect(paged).toEqual(expected);
+        },
+      ),
+      { numRuns: 20 },
+    );
+  });
+
   it('rates at most 3 results of a kind between the same two players (either order) in any 24 hours', async () => {
     const { store, clock, a, b, play } = await fresh();
     const c = await store.createPlayer('Cid', hash(3));
