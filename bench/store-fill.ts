@@ -4,7 +4,7 @@
 // Everything is drawn from a seeded generator: the same options give the same database.
 import { createHash } from 'node:crypto';
 import type { Database } from 'better-sqlite3';
-import { Store, type RecordRow } from '../server/store.ts';
+import { Store, type RecordRow } from '../server/store/index.ts';
 import { newGame } from '../shared/rules/index.ts';
 import { generator } from '../shared/scenes/index.ts';
 

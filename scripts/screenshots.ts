@@ -7,7 +7,7 @@ import { ProtocolClient } from '../bots/client.ts';
 import type { ServerMessage } from '../shared/protocol/index.ts';
 import { launchChromium } from '../tests/support/browser.ts';
 import { openDatabase } from '../server/database.ts';
-import { Store } from '../server/store.ts';
+import { Store } from '../server/store/index.ts';
 import { hashToken } from '../server/tokens.ts';
 import { buildClient } from './build-client.ts';
 import { newGame } from '../shared/rules/index.ts';

@@ -11,7 +11,7 @@ import { loadStaticFiles } from './static-files.ts';
 import { VERSION } from './version.ts';
 import { MAX_FRAME_BYTES } from '../shared/protocol/index.ts';
 import { GameService } from './game/service.ts';
-import { Store } from './store.ts';
+import { SqliteStore, Store } from './store/index.ts';
 import { Api } from './api/routes.ts';
 import { AddressCap } from './ws/address.ts';
 import { bindWebSocket } from './ws/binding.ts';
@@ -42,6 +42,9 @@ const HEALTH_LOCK_WAIT_MS = 100;
 export const MAX_MESSAGE_BYTES = MAX_FRAME_BYTES;
 
 export async function startServer(config: Config): Promise<RunningServer> {
+  // The PostgreSQL store (server/store/postgres.ts) is not yet the game service's: say so rather
+  // than quietly serve from the SQLite file.
+  if (config.databaseUrl !== undefined) throw new Error('BAIZE_DATABASE_URL is set, but this build serves games from SQLite only (BAIZE_DB): unset it');
   const { db, applied } = openDatabase(config.dbPath, config.migrationsDir);
   let service: GameService;
   let store: Store;
@@ -64,8 +67,10 @@ export async function startServer(config: Config): Promise<RunningServer> {
     throw err;
   }
   const files = loadStaticFiles(config.clientDir);
-  const health = healthCheck({ version: VERSION, schema: () => schemaVersion(db), probeWrite: () => store.probeWrite(HEALTH_LOCK_WAIT_MS) });
-  const api = new Api(store, { perPlayer: config.practicePerMinute, perAddress: config.practicePerAddressPerMinute }, workers);
+  // The HTTP side (health, API) goes through the asynchronous contract, over the service's Store.
+  const reads = new SqliteStore(db, Date.now, store);
+  const health = healthCheck({ version: VERSION, schema: () => reads.schemaVersion(), probeWrite: () => reads.probeWrite(HEALTH_LOCK_WAIT_MS) });
+  const api = new Api(reads, { perPlayer: config.practicePerMinute, perAddress: config.practicePerAddressPerMinute }, workers);
   const loop = config.eventLoopStats ? eventLoopStats() : undefined;
   const handler = createRequestHandler(files, health, api, loop);
   // Slow requests hold a socket each: headers and whole requests have deadlines (answered 408),

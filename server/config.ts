@@ -17,6 +17,8 @@ export interface Config {
   readonly host: string;
   readonly port: number;
   readonly dbPath: string;
+  /** PostgreSQL instead of the SQLite file (BAIZE_DATABASE_URL, postgres://...); undefined: SQLite. */
+  readonly databaseUrl: string | undefined;
   readonly migrationsDir: string;
   readonly clientDir: string;
   /** How long a dropped player's seat is held (ms). */
@@ -98,6 +100,7 @@ export function readConfig(env: NodeJS.ProcessEnv = process.env): Config {
     host,
     port,
     dbPath: resolve(env.BAIZE_DB ?? resolve(ROOT, 'data/baize.db')),
+    databaseUrl: databaseUrl(env),
     migrationsDir: resolve(env.BAIZE_MIGRATIONS ?? resolve(ROOT, 'migrations')),
     clientDir: resolve(env.BAIZE_CLIENT_DIR ?? resolve(ROOT, 'dist/client')),
     seatHoldMs: seconds(env, 'BAIZE_SEAT_HOLD_S', 60),
@@ -113,6 +116,26 @@ export function readConfig(env: NodeJS.ProcessEnv = process.env): Config {
     computerThinkMs: milliseconds(env, 'BAIZE_COMPUTER_THINK_MS', COMPUTER_THINK_MS, 1),
     eventLoopStats: env.BAIZE_EVENT_LOOP_STATS === '1',
   };
+}
+
+/**
+ * BAIZE_DATABASE_URL: a postgres:// (or postgresql://) URL with a host; unset or empty means the
+ * SQLite file. The error never repeats the value, which may hold a password.
+ */
+function databaseUrl(env: NodeJS.ProcessEnv): string | undefined {
+  const text = env.BAIZE_DATABASE_URL?.trim();
+  if (text === undefined || text === '') return undefined;
+  let url: URL;
+  try {
+    url = new URL(text);
+  } catch {
+    throw new RangeError('BAIZE_DATABASE_URL must be a URL such as postgres://user:password@host:5432/baize (this one does not parse)');
+  }
+  if (url.protocol !== 'postgres:' && url.protocol !== 'postgresql:') {
+    throw new RangeError(`BAIZE_DATABASE_URL must start with postgres:// or postgresql://, got ${url.protocol}//`);
+  }
+  if (url.hostname === '') throw new RangeError('BAIZE_DATABASE_URL must name a host, as in postgres://user:password@host:5432/baize');
+  return text;
 }
 
 /** Whole milliseconds from `min` to a minute. */

@@ -14,7 +14,7 @@ export interface Health {
   readonly error?: string;
 }
 
-export function createRequestHandler(files: ReadonlyMap<string, StaticFile>, health: () => Health, api?: Api, loop?: EventLoopStats) {
+export function createRequestHandler(files: ReadonlyMap<string, StaticFile>, health: () => Health | Promise<Health>, api?: Api, loop?: EventLoopStats) {
   return (req: IncomingMessage, res: ServerResponse): void => {
     const path = (req.url ?? '/').split('?', 1)[0] ?? '/';
     if (api && path.startsWith('/api/')) {
@@ -30,15 +30,18 @@ export function createRequestHandler(files: ReadonlyMap<string, StaticFile>, hea
       return;
     }
     if (path === '/healthz') {
-      let body: Health;
-      try {
-        body = health();
-      } catch (err) {
-        body = { ok: false, version: '', schema: -1 };
-        send(res, 503, 'application/json', JSON.stringify({ ...body, error: (err as Error).message }));
-        return;
-      }
-      send(res, body.ok ? 200 : 503, 'application/json', JSON.stringify(body), { 'cache-control': 'no-store' });
+      // Asynchronous: the store's probe may wait on another machine's database.
+      void (async () => {
+        let body: Health;
+        try {
+          body = await health();
+        } catch (err) {
+          body = { ok: false, version: '', schema: -1 };
+          send(res, 503, 'application/json', JSON.stringify({ ...body, error: (err as Error).message }));
+          return;
+        }
+        send(res, body.ok ? 200 : 503, 'application/json', JSON.stringify(body), { 'cache-control': 'no-store' });
+      })();
       return;
     }
     // The client's pages are one document; its router shows the page of the path.

@@ -1,11 +1,11 @@
 // The HTTP API (docs/api.md): leaderboards, records, players, matches with their replays, and
 // practice runs the server plays itself from seeds it issued. JSON in and out; reads go straight
-// to the store; practice requests are rate-limited per address and per player.
+// to the store (its asynchronous contract, either database); practice requests are rate-limited per address and per player.
 import { randomBytes } from 'node:crypto';
 import type { IncomingMessage, ServerResponse } from 'node:http';
 import type { PracticeKind } from '../../shared/rules/index.ts';
 import { PROVISIONAL_RD } from '../ratings/glicko2.ts';
-import { PRACTICE_SEED_TTL_MS, PracticeSeedError, type MatchRow, type PlayerRow, type RecordEntry, type Store } from '../store.ts';
+import { PRACTICE_SEED_TTL_MS, PracticeSeedError, type MatchRow, type PlayerRow, type AsyncStore, type RecordEntry } from '../store/index.ts';
 import { hashToken } from '../tokens.ts';
 import { ApiError, IdParam, LeaderboardQuery, MatchesQuery, parse, PracticeBody, PracticeStartBody, RecordsQuery } from './params.ts';
 import { addressKey } from '../address.ts';
@@ -57,7 +57,7 @@ export class Api {
   private readonly perAddress: RateLimiter;
 
   constructor(
-    private readonly store: Store,
+    private readonly store: AsyncStore,
     limits: PracticeLimits = PRACTICE_LIMITS,
     /** Where practice runs are replayed: the server's worker pool, off the event loop. */
     private readonly scorer: PracticeScorer = IN_PROCESS,
@@ -112,9 +112,9 @@ export class Api {
     throw new ApiError(404, 'not-found', `no such endpoint: ${path}`);
   }
 
-  private leaderboard(query: Json): Json {
+  private async leaderboard(query: Json): Promise<Json> {
     const q = parse(LeaderboardQuery, query);
-    const { total, rows } = this.store.leaderboard(q.kind, q.limit, q.offset);
+    const { total, rows } = await this.store.leaderboard(q.kind, q.limit, q.offset);
     return {
       kind: q.kind,
       total,
@@ -133,41 +133,41 @@ export class Api {
     };
   }
 
-  private records(query: Json): Json {
+  private async records(query: Json): Promise<Json> {
     const q = parse(RecordsQuery, query);
-    return { kind: q.kind, source: q.source, entries: this.store.records(q.kind, q.limit, q.offset, q.source).map((r, i) => recordEntry(r, q.offset + i + 1)) };
+    return { kind: q.kind, source: q.source, entries: (await this.store.records(q.kind, q.limit, q.offset, q.source)).map((r, i) => recordEntry(r, q.offset + i + 1)) };
   }
 
-  private matches(query: Json): Json {
+  private async matches(query: Json): Promise<Json> {
     const q = parse(MatchesQuery, query);
     const filter = { ...(q.player === undefined ? {} : { player: q.player }), ...(q.kind === undefined ? {} : { kind: q.kind }) };
-    return { limit: q.limit, offset: q.offset, matches: this.store.matches(filter, q.limit, q.offset).map(matchSummary) };
+    return { limit: q.limit, offset: q.offset, matches: (await this.store.matches(filter, q.limit, q.offset)).map(matchSummary) };
   }
 
-  private match(idText: string): Json {
+  private async match(idText: string): Promise<Json> {
     const id = parse(IdParam, idText);
-    const m = this.store.match(id);
+    const m = await this.store.match(id);
     if (!m) throw new ApiError(404, 'not-found', `no match ${id}`);
     return {
       ...matchSummary(m),
       start: m.start === null ? null : (JSON.parse(m.start) as unknown),
-      actions: this.store.matchActions(id).map((a) => a.action),
+      actions: (await this.store.matchActions(id)).map((a) => a.action),
     };
   }
 
-  private player(idText: string): Json {
+  private async player(idText: string): Promise<Json> {
     const id = parse(IdParam, idText);
-    const p = this.store.playerById(id);
+    const p = await this.store.playerById(id);
     if (!p) throw new ApiError(404, 'not-found', `no player ${id}`);
-    const ratings = this.store.ratingsOf(id);
+    const ratings = await this.store.ratingsOf(id);
     return {
       id: String(p.id),
       name: p.name,
       ratings: Object.fromEntries(ratings.map((r) => [r.kind, { rating: round(r.rating), rd: round(r.rd), games: r.games, wins: r.wins, provisional: r.rd >= PROVISIONAL_RD }])),
       games: ratings.reduce((n, r) => n + r.games, 0),
       wins: ratings.reduce((n, r) => n + r.wins, 0),
-      records: this.store.bestRecordsOf(id).map((r) => recordEntry(r)),
-      recent: this.store.matches({ player: id }, 10, 0).map(matchSummary),
+      records: (await this.store.bestRecordsOf(id)).map((r) => recordEntry(r)),
+      recent: (await this.store.matches({ player: id }, 10, 0)).map(matchSummary),
     };
   }
 
@@ -178,21 +178,21 @@ export class Api {
   }
 
   /** The player of a practice request's token, within their rate limit. */
-  private practiser(token: string): PlayerRow {
-    const player = this.store.playerByTokenHash(hashToken(token));
+  private async practiser(token: string): Promise<PlayerRow> {
+    const player = await this.store.playerByTokenHash(hashToken(token));
     if (!player) throw new ApiError(400, 'bad-token', 'token: unknown; say hello over the WebSocket to get one');
     this.limit(this.perPlayer, String(player.id), 'you');
     return player;
   }
 
   /** Issues a seed for a run: the rack it is played from, which the client cannot choose. */
-  private practiceStart(input: unknown): Json {
+  private async practiceStart(input: unknown): Promise<Json> {
     const body = parse(PracticeStartBody, input, 'bad-body');
-    const player = this.practiser(body.token);
+    const player = await this.practiser(body.token);
     // A seed the player already holds for this kind is drawn again (about 1 in 200 million).
     for (let i = 0; i < 8; i++) {
       const seed = randomBytes(4).readUInt32LE(0);
-      const issuedAt = this.store.issuePracticeSeed(player.id, body.kind, seed);
+      const issuedAt = await this.store.issuePracticeSeed(player.id, body.kind, seed);
       if (issuedAt !== null) return { kind: body.kind, seed, expiresAt: issuedAt + PRACTICE_SEED_TTL_MS };
     }
     throw new Error('no new practice seed in 8 draws');
@@ -205,9 +205,9 @@ export class Api {
    */
   private async practice(input: unknown): Promise<Json> {
     const body = parse(PracticeBody, input, 'bad-body');
-    const player = this.practiser(body.token);
+    const player = await this.practiser(body.token);
     const seed = body.seed;
-    const state = this.store.practiceSeedState(player.id, body.kind, seed);
+    const state = await this.store.practiceSeedState(player.id, body.kind, seed);
     if (state !== 'open') throw seedRefused(state, body.kind);
     let run;
     try {
@@ -219,7 +219,7 @@ export class Api {
     const records = run.achievements.map((a) => ({ what: a.what, player: player.id, value: a.value, better: a.what === 'break-and-run' ? -a.value : a.value }));
     let saved;
     try {
-      saved = this.store.savePractice({ player: player.id, kind: body.kind, seed, shots: JSON.stringify(body.shots), score: run.score, records });
+      saved = await this.store.savePractice({ player: player.id, kind: body.kind, seed, shots: JSON.stringify(body.shots), score: run.score, records });
     } catch (err) {
       if (err instanceof PracticeSeedError) throw seedRefused(err.state, body.kind);
       throw err;

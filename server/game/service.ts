@@ -7,7 +7,7 @@ import type { ClientMessage, PlayerRef, ServerMessage } from '../../shared/proto
 import { LOBBY_MAX_ROOMS, LOBBY_UPDATE_MS, MAX_OPEN_ROOMS_PER_PLAYER, MAX_TABS_PER_PLAYER } from '../../shared/protocol/index.ts';
 import { claimGame, concede, decide, EMPTY_TALLY, placeCueBall, playShot, shotClockExpired, tallied, type Game, type MatchAction } from '../../shared/rules/index.ts';
 import { RATED_MIN_PLAY_MS, RATED_MIN_SHOTS, unratedSentence, type UnratedReason } from '../ratings/policy.ts';
-import type { MatchResult, RoomChange, Store } from '../store.ts';
+import type { MatchResult, RoomChange, Store } from '../store/index.ts';
 import { guestName, nameProblem, normalizeName } from '../players/names.ts';
 import { hashToken, newToken } from '../tokens.ts';
 import { ChatLimits } from './chat-limits.ts';

@@ -7,7 +7,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { chooseShot } from '../../bots/strategy.ts';
 import { simulate } from '../../shared/physics/index.ts';
 import { openDatabase } from '../../server/database.ts';
-import { Store } from '../../server/store.ts';
+import { Store } from '../../server/store/index.ts';
 import { hashToken } from '../../server/tokens.ts';
 import { newGame, playShot, practiceRun, practiceStart, PRACTICE_OPPONENT, type Game, type PracticeKind, type PracticeShot } from '../../shared/rules/index.ts';
 import { ask, connect, playTurn, until, wsUrl, type Seat } from '../support/game-clients.ts';

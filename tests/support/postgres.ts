@@ -54,8 +54,13 @@ export interface PostgresServer {
   stop(): Promise<void>;
 }
 
+export interface PostgresStartOptions {
+  /** Flush commits to disk as a production server does (benchmarks); tests skip it for speed. */
+  readonly durable?: boolean;
+}
+
 /** Starts a fresh cluster; the caller stops it (afterAll). */
-export async function startPostgres(): Promise<PostgresServer> {
+export async function startPostgres(options: PostgresStartOptions = {}): Promise<PostgresServer> {
   const bin = binDir();
   if (bin === null) throw new Error('BAIZE_REQUIRE_POSTGRES=1 but no PostgreSQL: install Debian\'s postgresql package');
   const root = userInfo().uid === 0;
@@ -70,7 +75,7 @@ export async function startPostgres(): Promise<PostgresServer> {
   const port = await freePort();
   const server: ChildProcess = spawn(
     join(bin, 'postgres'),
-    ['-D', data, '-p', String(port), '-k', dir, '-c', 'listen_addresses=127.0.0.1', '-c', 'fsync=off', '-c', 'full_page_writes=off'],
+    ['-D', data, '-p', String(port), '-k', dir, '-c', 'listen_addresses=127.0.0.1', ...(options.durable ? [] : ['-c', 'fsync=off', '-c', 'full_page_writes=off'])],
     { ...as, env, cwd: dir, stdio: ['ignore', 'ignore', 'pipe'] },
   );
   let log = '';

@@ -3,7 +3,7 @@
 import { join } from 'node:path';
 import { openDatabase } from '../../server/database.ts';
 import { GameService, type ConnId, type Delivery, type ServiceOptions } from '../../server/game/service.ts';
-import { Store } from '../../server/store.ts';
+import { Store } from '../../server/store/index.ts';
 import { parseClientMessage, type ClientMessage, type ServerMessage } from '../../shared/protocol/index.ts';
 import { ROOT, tempDir } from './server-process.ts';
 

@@ -1,144 +1,31 @@
-// Every SQL statement of the server: players, rooms, matches with their action logs, results.
-// Each write that belongs together is one transaction, so a crash leaves either all of it or none.
+// Every SQL statement of the embedded server, synchronous over better-sqlite3: players, rooms,
+// matches with their action logs, results. Each write that belongs together is one transaction,
+// so a crash leaves either all of it or none. SqliteStore (sqlite.ts) serves it as an AsyncStore.
 import type { Database } from 'better-sqlite3';
-import { nameKeys } from './players/names.ts';
-import { NEW_RATING, PROVISIONAL_RD, type Rating } from './ratings/glicko2.ts';
-import { ANCHOR_BOARD_SIZE, DAY_MS, RATED_PER_PAIR_PER_DAY, rateResult, type UnratedReason } from './ratings/policy.ts';
-
-export interface PlayerRow {
-  readonly id: number;
-  readonly name: string;
-}
-
-/** Players a pass of the pruner looked at: those it may delete, and where the next batch starts. */
-export interface IdlePage {
-  readonly idle: number[];
-  /** The id after which the next batch starts; undefined when the pass is done. */
-  readonly next: number | undefined;
-}
-
-/** What makes a key of a name taken before this release unique (see fillNameKeys). */
-const LEGACY_KEY = '\u0001';
-
-export interface RoomRow {
-  readonly id: string;
-  readonly status: string;
-  readonly state: string;
-}
-
-export interface NewRoom {
-  readonly id: string;
-  readonly kind: string;
-  readonly raceTo: number;
-  readonly private: boolean;
-  readonly shotClock: number;
-  readonly createdBy: number;
-  readonly status: string;
-  readonly state: string;
-}
-
-export interface NewMatch {
-  readonly roomId: string;
-  readonly kind: string;
-  readonly raceTo: number;
-  readonly player1: number;
-  readonly player2: number;
-  readonly seed: number;
-  /** The rules' Game at the start, JSON. */
-  readonly start: string;
-}
-
-/** A verified achievement; `better` sorts it, higher first. */
-export interface RecordRow {
-  readonly what: string;
-  readonly player: number;
-  readonly value: number;
-  readonly better: number;
-}
-
-export interface MatchResult {
-  readonly matchId: number;
-  readonly kind: string;
-  readonly winner: number;
-  readonly loser: number;
-  readonly how: string;
-  readonly scores: string;
-  /**
-   * Whether the game was real enough to move the ratings (the service's rules: shots, time); the
-   * store may still leave it unrated for the pair's daily limit.
-   */
-  readonly rated: boolean;
-  /** Why not, when `rated` is false. */
-  readonly unrated?: UnratedReason;
-  readonly records: readonly RecordRow[];
-}
-
-/** One change of a room: its new snapshot, and the action that made it in its match's log. */
-export interface RoomChange {
-  readonly roomId: string;
-  readonly status: string;
-  readonly state: string;
-  readonly action?: { readonly matchId: number; readonly seq: number; readonly json: string };
-  readonly result?: MatchResult;
-}
-
-/** Where a record comes from: a finished match, or a practice run. */
-export type RecordSource = 'match' | 'practice';
-
-/** How long an issued practice seed can be used (ms); older ones are deleted, used or not. */
-export const PRACTICE_SEED_TTL_MS = 6 * 3600_000;
-/** Unused seeds a player may hold; issuing another retires the oldest. */
-export const PRACTICE_OPEN_SEEDS = 20;
-/** Expired seeds are deleted at most this often (ms), when a seed is issued. */
-const SEED_SWEEP_MS = 10 * 60_000;
-
-/** A practice seed as a submission finds it: issued and unused, used, or unknown (never issued to
- * this player for this kind, retired, or expired). */
-export type PracticeSeedState = 'open' | 'used' | 'unknown';
-
-/** Thrown by savePractice when its seed is not open; nothing is written. */
-export class PracticeSeedError extends Error {
-  constructor(readonly state: Exclude<PracticeSeedState, 'open'>) {
-    super(`practice seed ${state}`);
-  }
-}
-
-export interface BoardRow {
-  readonly id: number;
-  readonly name: string;
-  readonly rating: number;
-  readonly rd: number;
-  readonly games: number;
-  readonly wins: number;
-}
-
-export interface RecordEntry {
-  readonly id: number;
-  readonly kind: string;
-  readonly what: string;
-  readonly playerId: number;
-  readonly name: string;
-  readonly value: number;
-  readonly matchId: number | null;
-  readonly practiceId: number | null;
-  readonly createdAt: number;
-}
-
-export interface MatchRow {
-  readonly id: number;
-  readonly kind: string;
-  readonly raceTo: number;
-  readonly player1: number;
-  readonly name1: string;
-  readonly player2: number;
-  readonly name2: string;
-  readonly startedAt: number;
-  readonly finishedAt: number | null;
-  readonly winner: number | null;
-  readonly how: string | null;
-  readonly rated: number | null;
-  readonly unrated: UnratedReason | null;
-}
+import { nameKeys } from '../players/names.ts';
+import { NEW_RATING, PROVISIONAL_RD, type Rating } from '../ratings/glicko2.ts';
+import { ANCHOR_BOARD_SIZE, DAY_MS, RATED_PER_PAIR_PER_DAY, rateResult, type UnratedReason } from '../ratings/policy.ts';
+import {
+  LEGACY_KEY,
+  PRACTICE_OPEN_SEEDS,
+  PRACTICE_SEED_TTL_MS,
+  PracticeSeedError,
+  SEED_SWEEP_MS,
+  StaleRoomError,
+  type BoardRow,
+  type IdlePage,
+  type MatchResult,
+  type MatchRow,
+  type NewMatch,
+  type NewRoom,
+  type PlayerRow,
+  type PracticeSeedState,
+  type RecordEntry,
+  type RecordRow,
+  type RecordSource,
+  type RoomChange,
+  type RoomRow,
+} from './types.ts';
 
 const MATCH_COLUMNS = `m.id, m.kind, m.race_to AS raceTo, m.player1, p1.name AS name1, m.player2, p2.name AS name2,
   m.started_at AS startedAt, m.finished_at AS finishedAt, r.winner, r.how, r.rated, r.unrated
@@ -199,6 +86,10 @@ export class Store {
         'INSERT INTO rooms (id, kind, race_to, private, shot_clock, created_by, created_at, status, state, updated_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)',
       ),
       updateRoom: db.prepare<[string, string, number, string]>('UPDATE rooms SET status = ?, state = ?, updated_at = ? WHERE id = ?'),
+      updateRoomAt: db.prepare<[string, string, number, string, number]>(
+        "UPDATE rooms SET status = ?, state = ?, updated_at = ? WHERE id = ? AND json_extract(state, '$.stateId') = ?",
+      ),
+      room: db.prepare<[string], RoomRow>('SELECT id, status, state FROM rooms WHERE id = ?'),
       openRooms: db.prepare<[], RoomRow>("SELECT id, status, state FROM rooms WHERE status IN ('waiting', 'playing', 'over') ORDER BY created_at, id"),
       insertMatch: db.prepare<[string, string, number, number, number, number, string, number]>(
         'INSERT INTO matches (room_id, kind, race_to, player1, player2, seed, start, started_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?)',
@@ -427,14 +318,19 @@ export class Store {
     return Number(info.lastInsertRowid);
   }
 
-  /** Changes of rooms, their actions and any results, in one transaction. */
+  /**
+   * Changes of rooms, their actions and any results, in one transaction. A room not at the
+   * stateId its change expects refuses the whole save (StaleRoomError); its row is written first,
+   * so that the refusal comes before any action or result is tried.
+   */
   saveChanges(...changes: RoomChange[]): void {
     this.db.transaction(() => {
       const now = this.now();
       for (const c of changes) {
+        if (c.expectStateId === undefined) this.s.updateRoom.run(c.status, c.state, now, c.roomId);
+        else if (this.s.updateRoomAt.run(c.status, c.state, now, c.roomId, c.expectStateId).changes !== 1) throw new StaleRoomError(c.roomId, c.expectStateId);
         if (c.action) this.s.insertAction.run(c.action.matchId, c.action.seq, c.action.json, now);
         if (c.result) this.finish(c.result, now);
-        this.s.updateRoom.run(c.status, c.state, now, c.roomId);
       }
     })();
   }
@@ -476,6 +372,11 @@ export class Store {
   /** Rooms not closed, oldest first: what a restart brings back. */
   openRooms(): RoomRow[] {
     return this.s.openRooms.all();
+  }
+
+  /** One room as last committed, closed or not. */
+  room(id: string): RoomRow | undefined {
+    return this.s.room.get(id);
   }
 
   matchActions(matchId: number): { seq: number; action: unknown }[] {
