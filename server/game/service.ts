@@ -621,7 +621,9 @@ export class GameService {
       })
       .then((decision) => {
         if (room.thinking !== thinking) return;
-        thinking.timer = setTimeout(() => void this.inRoom(s.id, () => this.computerPlays(room, thinking, decision)), Math.max(0, playAt - this.now()));
+        // Played in the room's queue, after whatever came before it there.
+        const play = () => this.inRoom(s.id, () => this.computerPlays(room, thinking, decision)).catch((err: unknown) => this.log(`computer in room ${s.id}: ${(err as Error).stack ?? String(err)}`));
+        thinking.timer = setTimeout(play, Math.max(0, playAt - this.now()));
         thinking.timer.unref?.();
       })
       .catch((err: unknown) => this.log(`computer in room ${s.id}: ${(err as Error).stack ?? String(err)}`));
