@@ -79,6 +79,25 @@ export function serviceCases(open: (options?: HarnessOptions) => Promise<Harness
       expect(errorOf((await h.send(3, { type: 'join', room: 'nowhere' })).get(3))?.code).toBe('no-room');
     });
 
+    it('applies a room\'s commands in arrival order, each answered with its own deliveries', async () => {
+      h = await open();
+      const room = await table(h);
+      const shot = { ball: 'cue', heading: 0, speed: 6, side: 0, top: 0 };
+      // Sent at once, as a double click and a chat would be: the second shot is checked against the
+      // state the first committed, and nobody's answer holds another's messages.
+      const [first, again, chat] = await Promise.all([
+        h.service.handle(1, { type: 'shot', id: 'a', room: room.id, stateId: 1, shot }),
+        h.service.handle(1, { type: 'shot', id: 'b', room: room.id, stateId: 1, shot }),
+        h.service.handle(2, { type: 'chat', id: 'c', room: room.id, text: 'nice' }),
+      ]);
+      const types = (d: typeof first) => d.map((x) => x.message.type);
+      expect(first.find((d) => d.to.includes(1))?.message).toMatchObject({ type: 'shot', re: 'a', stateId: 2 });
+      expect(again).toEqual([{ to: [1], message: expect.objectContaining({ type: 'error', re: 'b', code: 'stale-state', message: 'the room is at stateId 2, not 1' }) }]);
+      expect(types(chat)).toEqual(['chat']);
+      expect(types(first)).not.toContain('chat');
+      expect((await h.store.matchActions(room.match!)).map((a) => a.seq)).toEqual([2]);
+    });
+
     it('plays a shot: everyone gets the outcome of simulate(sceneOf(game)) and the next game; stale and out-of-turn moves change nothing', async () => {
       h = await open();
       const room = await table(h);
