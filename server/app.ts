@@ -3,15 +3,13 @@ import { createServer } from 'node:http';
 import type { AddressInfo } from 'node:net';
 import { WebSocketServer } from 'ws';
 import type { Config } from './config.ts';
-import { openDatabase } from './database.ts';
 import { healthCheck } from './health.ts';
 import { createRequestHandler } from './http-routes.ts';
-import { schemaVersion } from './migrate.ts';
 import { loadStaticFiles } from './static-files.ts';
 import { VERSION } from './version.ts';
 import { MAX_FRAME_BYTES } from '../shared/protocol/index.ts';
 import { GameService } from './game/service.ts';
-import { SqliteStore, Store } from './store/index.ts';
+import { openStore, type AsyncStore } from './store/index.ts';
 import { Api } from './api/routes.ts';
 import { AddressCap } from './ws/address.ts';
 import { bindWebSocket } from './ws/binding.ts';
@@ -42,18 +40,16 @@ const HEALTH_LOCK_WAIT_MS = 100;
 export const MAX_MESSAGE_BYTES = MAX_FRAME_BYTES;
 
 export async function startServer(config: Config): Promise<RunningServer> {
-  // The PostgreSQL store (server/store/postgres.ts) is not yet the game service's: say so rather
-  // than quietly serve from the SQLite file.
-  if (config.databaseUrl !== undefined) throw new Error('BAIZE_DATABASE_URL is set, but this build serves games from SQLite only (BAIZE_DB): unset it');
-  const { db, applied } = openDatabase(config.dbPath, config.migrationsDir);
+  // The SQLite file, or PostgreSQL with BAIZE_DATABASE_URL; migrated, and players from before
+  // migration 006 given their name keys, as it opens.
+  const { store, applied } = await openStore(config);
   let service: GameService;
-  let store: Store;
   let workers: WorkerPool | undefined;
+  let schema: number;
   try {
-    // The store gives players from before migration 006 their name keys as it opens.
-    store = new Store(db);
+    schema = await store.schemaVersion();
     workers = new WorkerPool({ size: config.computerWorkers, budgetMs: config.computerThinkMs });
-    service = new GameService(store, {
+    service = await GameService.start(store, {
       seatHoldMs: config.seatHoldMs,
       guestsPerAddress: config.guestsPerAddress,
       guestKeepMs: config.guestKeepMs,
@@ -63,12 +59,12 @@ export async function startServer(config: Config): Promise<RunningServer> {
     });
   } catch (err) {
     void workers?.close();
-    db.close();
+    await store.close();
     throw err;
   }
   const files = loadStaticFiles(config.clientDir);
-  // The HTTP side (health, API) goes through the asynchronous contract, over the service's Store.
-  const reads = new SqliteStore(db, Date.now, store);
+  // The HTTP side (health, API) reads through the same store as the game service.
+  const reads: AsyncStore = store;
   const health = healthCheck({ version: VERSION, schema: () => reads.schemaVersion(), probeWrite: () => reads.probeWrite(HEALTH_LOCK_WAIT_MS) });
   const api = new Api(reads, { perPlayer: config.practicePerMinute, perAddress: config.practicePerAddressPerMinute }, workers);
   const loop = config.eventLoopStats ? eventLoopStats() : undefined;
@@ -93,7 +89,7 @@ export async function startServer(config: Config): Promise<RunningServer> {
   } catch (err) {
     void workers.close();
     loop?.stop();
-    db.close();
+    await store.close();
     throw err;
   }
 
@@ -114,7 +110,7 @@ export async function startServer(config: Config): Promise<RunningServer> {
   return {
     url: `http://${hostInUrl}:${port}`,
     port,
-    schema: schemaVersion(db),
+    schema,
     migrationsApplied: applied,
     close() {
       closing ??= new Promise<void>((resolve) => {
@@ -124,8 +120,10 @@ export async function startServer(config: Config): Promise<RunningServer> {
         for (const socket of wss.clients) socket.close(1001, 'server shutting down');
         wss.close();
         http.close(() => {
-          db.close();
-          resolve();
+          store.close().then(resolve, (err: unknown) => {
+            console.error(`closing the store: ${(err as Error).stack ?? String(err)}`);
+            resolve();
+          });
         });
         http.closeIdleConnections();
         // Sockets that do not finish their close handshake promptly are cut.

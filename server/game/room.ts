@@ -4,6 +4,7 @@ import { SHOT_CLOCK_MIN_S, type GameKindName, type PlayerRef, type RoomView } fr
 import { newGame, tallyStep, type Game, type Tally } from '../../shared/rules/index.ts';
 import type { ConnId } from './lobby.ts';
 import type { Level } from '../../shared/ai/index.ts';
+import type { UnratedReason } from '../ratings/policy.ts';
 
 export type RoomStatus = 'waiting' | 'playing' | 'over' | 'closed';
 
@@ -54,6 +55,10 @@ export class Room {
   thinking: { stateId: number; timer?: NodeJS.Timeout } | null = null;
   /** When the balls of the last shot stop (ms since the epoch): the computer's pause counts from there. */
   stillAt = 0;
+  /** Whether the finished match counted for the ratings, as stored (kept here so a view needs no read). */
+  outcome: { readonly rated: boolean; readonly unrated: UnratedReason | null } | null = null;
+  /** A tick's timers are queued for the room: the next tick does not queue them again. */
+  timersQueued = false;
 
   constructor(public state: RoomState) {}
 }

@@ -1,13 +1,19 @@
 // The game service: players, rooms, seats, turns, shot clocks and held seats. It knows no sockets:
 // it takes parsed commands from numbered connections and returns what to send to whom. Every
 // change is computed on copies, written to the store, and only then made current, so a command
-// that fails (bad input, the rules, the physics, the disk) changes nothing for anyone.
+// that fails (bad input, the rules, the physics, the database) changes nothing for anyone.
+//
+// The store is asynchronous, so operations overlap. Each operation collects its deliveries in its
+// own outbox (an array passed down its calls), never a shared buffer, so no operation sends
+// another's messages or loses its own when another fails. A room's commands, timers and computer
+// moves run one at a time in arrival order (a promise chain per room), so each sees the state the
+// previous one committed; different rooms proceed concurrently.
 import { randomBytes } from 'node:crypto';
 import type { ClientMessage, PlayerRef, ServerMessage } from '../../shared/protocol/index.ts';
 import { LOBBY_MAX_ROOMS, LOBBY_UPDATE_MS, MAX_OPEN_ROOMS_PER_PLAYER, MAX_TABS_PER_PLAYER } from '../../shared/protocol/index.ts';
 import { claimGame, concede, decide, EMPTY_TALLY, placeCueBall, playShot, shotClockExpired, tallied, type Game, type MatchAction } from '../../shared/rules/index.ts';
 import { RATED_MIN_PLAY_MS, RATED_MIN_SHOTS, unratedSentence, type UnratedReason } from '../ratings/policy.ts';
-import type { MatchResult, RoomChange, Store } from '../store/index.ts';
+import { StaleRoomError, TooManyRoomsError, type AsyncStore, type MatchResult, type RoomChange, type StoredResult } from '../store/index.ts';
 import { guestName, nameProblem, normalizeName } from '../players/names.ts';
 import { hashToken, newToken } from '../tokens.ts';
 import { ChatLimits } from './chat-limits.ts';
@@ -27,6 +33,22 @@ export type { ConnId } from './lobby.ts';
 export interface Delivery {
   readonly to: readonly ConnId[];
   readonly message: ServerMessage;
+}
+
+/** One operation's deliveries, in the order they are to go out. */
+type Outbox = Delivery[];
+
+/** A room as the store holds it at start, and its finished match's result when it has one. */
+interface Restored {
+  readonly state: RoomState;
+  readonly result: StoredResult | undefined;
+}
+
+/** A move refused because the room changed in the store meanwhile: the room has been reloaded. */
+class StaleState extends ServiceError {
+  constructor(readonly room: Room) {
+    super('stale-state', `the room changed elsewhere and is now at stateId ${room.state.stateId}: look again and retry`);
+  }
 }
 
 export interface ServiceOptions {
@@ -77,7 +99,6 @@ export class GameService {
   private readonly watching = new Map<ConnId, Set<string>>();
   /** The network address each open socket came from (for limits per address). */
   private readonly addresses = new Map<ConnId, string>();
-  private out: Delivery[] = [];
   private lobbyChanged = false;
   private readonly guestLimit: GuestLimit | undefined;
   private sweepAt = 0;
@@ -95,19 +116,58 @@ export class GameService {
   /** The computer's stored players, by level. */
   private readonly computers = new Map<Level, PlayerRef>();
   private readonly computerIds = new Set<string>();
+  /** Each room's queue: the last operation of the room, which the next one waits for. */
+  private readonly queues = new Map<string, Promise<void>>();
+  /** Sockets whose hello is under way: true, or false once the socket closed meanwhile. */
+  private readonly greeting = new Map<ConnId, boolean>();
+  /** The pruner's pass in progress, if any. */
+  private pruning: Promise<void> | undefined;
 
+  /** The service with every room not closed brought back from the store. */
+  static async start(store: AsyncStore, options: ServiceOptions): Promise<GameService> {
+    const restored: Restored[] = [];
+    for (const row of await store.openRooms()) {
+      const state = JSON.parse(row.state) as RoomState;
+      const result = state.status === 'over' && state.matchId !== null ? await store.matchResult(state.matchId) : undefined;
+      restored.push({ state, result });
+    }
+    return new GameService(store, options, restored);
+  }
+
+  /** Use `start`, which reads the rooms to bring back; this one starts with `restored`. */
   constructor(
-    private readonly store: Store,
+    private readonly store: AsyncStore,
     private readonly options: ServiceOptions,
+    restored: readonly Restored[] = [],
   ) {
     this.now = options.now ?? Date.now;
     this.log = options.log ?? ((line) => console.error(line));
     this.lobby = new Lobby(this.now());
     this.guestLimit = options.guestsPerAddress === undefined ? undefined : new GuestLimit(options.guestsPerAddress);
-    for (const row of store.openRooms()) {
-      const room = this.addRoom(new Room(JSON.parse(row.state) as RoomState));
+    for (const { state, result } of restored) {
+      const room = this.addRoom(new Room(state));
+      room.outcome = outcomeOf(result);
       if (room.state.computer) this.computerIds.add(room.state.computer.id);
     }
+  }
+
+  /**
+   * Runs `fn` after every operation queued before it in the room (a command, a timer, a computer
+   * move) has finished, so that a room's operations apply in arrival order. Not re-entrant: an
+   * operation already in the room's queue must not queue another there.
+   */
+  private inRoom<T>(id: string, fn: () => Promise<T>): Promise<T> {
+    const before = this.queues.get(id);
+    const run = before === undefined ? fn() : before.then(fn);
+    const tail = run.then(
+      () => undefined,
+      () => undefined,
+    );
+    this.queues.set(id, tail);
+    void tail.then(() => {
+      if (this.queues.get(id) === tail) this.queues.delete(id);
+    });
+    return run;
   }
 
   /** Rooms brought back from the store or made since, not closed. */
@@ -130,14 +190,20 @@ export class GameService {
     return this.addresses.get(conn) ?? '';
   }
 
-  handle(conn: ConnId, msg: ClientMessage): Delivery[] {
+  async handle(conn: ConnId, msg: ClientMessage): Promise<Delivery[]> {
+    const out: Outbox = [];
     try {
-      if (msg.type === 'hello') this.hello(conn, msg);
-      else this.command(conn, this.welcomed(conn), msg);
+      if (msg.type === 'hello') await this.hello(out, conn, msg);
+      else {
+        const player = this.welcomed(conn);
+        // A command about a room waits its turn in the room's queue.
+        if ('room' in msg) await this.inRoom(msg.room, () => this.command(out, conn, player, msg));
+        else await this.command(out, conn, player, msg);
+      }
     } catch (err) {
-      this.fail(conn, msg.id, err);
+      this.fail(out, conn, msg.id, err);
     }
-    return this.flush();
+    return out;
   }
 
   /** An error for a frame that never became a command (bad JSON, a schema failure). */
@@ -146,7 +212,9 @@ export class GameService {
   }
 
   /** A socket closed: it stops watching; a player's last socket starts the seat hold. */
-  close(conn: ConnId): Delivery[] {
+  async close(conn: ConnId): Promise<Delivery[]> {
+    const out: Outbox = [];
+    if (this.greeting.has(conn)) this.greeting.set(conn, false);
     for (const id of this.watching.get(conn) ?? []) {
       const room = this.lobby.rooms.get(id);
       if (room?.spectators.delete(conn)) {
@@ -158,50 +226,86 @@ export class GameService {
     this.addresses.delete(conn);
     const gone = this.lobby.detach(conn, this.now());
     if (gone) {
-      for (const room of this.roomsOf(gone.id)) this.broadcastRoom(room);
+      for (const room of this.roomsOf(gone.id)) this.broadcastRoom(out, room);
       this.lobbyChanged = true;
     }
-    return this.flush();
+    return out;
   }
 
-  /** Timers: shot clocks that ran out, and seat holds that ended (the opponent may now claim). */
-  tick(): Delivery[] {
+  /**
+   * Timers: shot clocks that ran out, and seat holds that ended (the opponent may now claim). A
+   * room with a timer due runs it in its queue, and its deliveries go out through the outlet as
+   * soon as it is done (not held back for slower rooms); the tick resolves once all have run.
+   */
+  async tick(): Promise<Delivery[]> {
+    const out: Outbox = [];
     const now = this.now();
-    this.housekeeping(now);
-    for (const room of [...this.lobby.rooms.values()]) {
-      try {
-        this.timers(room, now);
-      } catch (err) {
-        // A room whose timer fails (say, the disk) stays as it was and is tried again next tick.
-        this.log(`timers of room ${room.state.id}: ${(err as Error).stack ?? String(err)}`);
-      }
+    const pass = this.housekeeping(now);
+    const due: Promise<void>[] = [];
+    for (const room of this.lobby.rooms.values()) {
+      if (room.state.status === 'playing') this.computerTurn(room);
+      if (room.timersQueued || !this.timersDue(room, now)) continue;
+      room.timersQueued = true;
+      due.push(
+        this.inRoom(room.state.id, async () => {
+          const mine: Outbox = [];
+          try {
+            await this.timers(mine, room, this.now());
+          } catch (err) {
+            // A room whose timer fails (say, the database) stays as it was and is tried again next tick.
+            if (!(err instanceof StaleState)) this.log(`timers of room ${room.state.id}: ${(err as Error).stack ?? String(err)}`);
+            else this.broadcastRoom(mine, room);
+          } finally {
+            room.timersQueued = false;
+          }
+          if (mine.length > 0) this.emit(mine);
+        }),
+      );
     }
-    for (const room of [...this.roomsChanged]) if (room.state.status !== 'closed') this.broadcastRoom(room);
+    await Promise.all([pass, ...due]);
+    for (const room of [...this.roomsChanged]) if (room.state.status !== 'closed') this.broadcastRoom(out, room);
     this.roomsChanged.clear();
-    if (this.lobbyChanged && now - this.lobbySentAt >= LOBBY_UPDATE_MS) {
+    const at = this.now();
+    if (this.lobbyChanged && at - this.lobbySentAt >= LOBBY_UPDATE_MS) {
       this.lobbyChanged = false;
-      this.lobbySentAt = now;
-      if (this.lobby.subscribers.size > 0) this.send([...this.lobby.subscribers], this.lobbyMessage());
+      this.lobbySentAt = at;
+      if (this.lobby.subscribers.size > 0) this.send(out, [...this.lobby.subscribers], this.lobbyMessage());
     }
-    if (now - this.chatPrunedAt >= 10_000) {
-      this.chatLimits.prune(now);
-      this.chatPrunedAt = now;
+    if (at - this.chatPrunedAt >= 10_000) {
+      this.chatLimits.prune(at);
+      this.chatPrunedAt = at;
     }
-    return this.flush();
+    return out;
   }
 
-  /** Forgets idle guest limits, and deletes a batch of players who never played and are long gone. */
-  private housekeeping(now: number): void {
+  /** Deliveries made outside a command (timers, the computer's moves), out through the binding's outlet. */
+  private emit(deliveries: Outbox): void {
+    try {
+      this.outlet?.(deliveries);
+    } catch (err) {
+      this.log(`delivering: ${(err as Error).stack ?? String(err)}`);
+    }
+  }
+
+  /** Forgets idle guest limits, and starts (or joins) a batch of the pruner's pass. */
+  private housekeeping(now: number): Promise<void> {
     if (this.guestLimit && now >= this.sweepAt) {
       this.guestLimit.sweep(now);
       this.sweepAt = now + SWEEP_EVERY_MS;
     }
     const keep = this.options.guestKeepMs;
-    if (keep === undefined || now < this.pruneAt) return;
+    if (this.pruning) return this.pruning;
+    if (keep === undefined || now < this.pruneAt) return Promise.resolve();
+    this.pruning = this.prune(now, keep).finally(() => (this.pruning = undefined));
+    return this.pruning;
+  }
+
+  /** Deletes a batch of players who never played and are long gone. */
+  private async prune(now: number, keep: number): Promise<void> {
     try {
-      const page = this.store.idlePlayers(this.pruneFrom, now - keep, PRUNE_BATCH);
+      const page = await this.store.idlePlayers(this.pruneFrom, now - keep, PRUNE_BATCH);
       // Someone connected is kept even if they never played (a spectator for weeks).
-      this.store.deletePlayers(page.idle.filter((id) => !this.lobby.connected(String(id))));
+      await this.store.deletePlayers(page.idle.filter((id) => !this.lobby.connected(String(id))));
       this.pruneFrom = page.next ?? 0;
       if (page.next === undefined) this.pruneAt = now + PRUNE_EVERY_MS;
     } catch (err) {
@@ -210,29 +314,42 @@ export class GameService {
     }
   }
 
-  private timers(room: Room, now: number): void {
+  /** Whether `timers` has anything to do in the room now (checked without queueing). */
+  private timersDue(room: Room, now: number): boolean {
     const s = room.state;
+    if (s.status === 'over') return s.closesAt !== null && s.closesAt <= now;
+    if (s.status === 'waiting') return s.seats.every((p) => this.awayPastHold(p.id, now));
+    if (s.status !== 'playing' || s.game === null) return false;
+    if (s.deadline !== null && s.deadline <= now && !this.computersTurn(s)) return true;
+    return s.seats.some((p) => this.awayPastHold(p.id, now) && !room.holdsOver.has(p.id));
+  }
+
+  /** The computer is on turn and plays it (its turn is bounded by its think budget and pause, not the shot clock). */
+  private computersTurn(s: RoomState): boolean {
+    return s.computer !== undefined && s.computer !== null && s.game !== null && s.game.turn === s.computer.id && this.options.computer !== undefined;
+  }
+
+  private async timers(out: Outbox, room: Room, now: number): Promise<void> {
+    const s = room.state;
+    if (this.lobby.rooms.get(s.id) !== room) return;
     if (s.status === 'over' && s.closesAt !== null && s.closesAt <= now) return this.settle(room, { ...s, status: 'closed' });
     // A table nobody waits at any more (its player gone past the seat hold) closes.
     if (s.status === 'waiting' && s.seats.every((p) => this.awayPastHold(p.id, now))) return this.settle(room, { ...s, status: 'closed' });
     if (s.status !== 'playing' || s.game === null) return;
-    this.computerTurn(room);
-    // The computer's own turn is bounded by its think budget and pause, not by the shot clock.
-    const computersTurn = s.computer !== undefined && s.computer !== null && s.game.turn === s.computer.id && this.options.computer !== undefined;
-    if (s.deadline !== null && s.deadline <= now && !computersTurn) {
+    if (s.deadline !== null && s.deadline <= now && !this.computersTurn(s)) {
       if (s.seats.every((p) => !this.lobby.connected(p.id))) {
         // Nobody is there to play: the clock stops until a player comes back, so that no game
         // is decided by timeouts alone.
-        this.settle(room, { ...s, deadline: null });
-        this.broadcastRoom(room);
+        await this.settle(room, { ...s, deadline: null });
+        this.broadcastRoom(out, room);
       } else {
-        this.move(room, afterMove(s, shotClockExpired(s.game), 'played', now), { type: 'clock', player: s.game.turn });
+        await this.move(out, room, afterMove(s, shotClockExpired(s.game), 'played', now), { type: 'clock', player: s.game.turn });
       }
     }
     for (const p of room.state.seats) {
       if (this.awayPastHold(p.id, now) && !room.holdsOver.has(p.id)) {
         room.holdsOver.add(p.id);
-        this.broadcastRoom(room);
+        this.broadcastRoom(out, room);
       }
     }
   }
@@ -250,93 +367,106 @@ export class GameService {
     return player;
   }
 
-  private command(conn: ConnId, player: PlayerRef, msg: Exclude<ClientMessage, { type: 'hello' }>): void {
+  private async command(out: Outbox, conn: ConnId, player: PlayerRef, msg: Exclude<ClientMessage, { type: 'hello' }>): Promise<void> {
     switch (msg.type) {
       case 'lobby':
         if (msg.watch === false) this.lobby.subscribers.delete(conn);
         else this.lobby.subscribers.add(conn);
-        this.send([conn], this.lobbyMessage(msg.id));
+        this.send(out, [conn], this.lobbyMessage(msg.id));
         return;
       case 'create':
-        return this.create(conn, player, msg);
+        return this.create(out, conn, player, msg);
       case 'rename':
-        return this.rename(conn, player, msg);
+        return this.rename(out, conn, player, msg);
       case 'join':
-        return this.join(conn, player, msg);
+        return this.join(out, conn, player, msg);
       case 'watch':
-        return this.watch(conn, msg);
+        return this.watch(out, conn, msg);
       case 'leave':
-        return this.leave(conn, player, msg);
+        return this.leave(out, conn, player, msg);
       case 'shot':
-        return this.shot(conn, player, msg);
+        return this.shot(out, conn, player, msg);
       case 'place': {
         const { room, game } = this.onTurn(player, msg.room, msg.stateId);
         const next = { ...room.state, game: placeCueBall(game, player.id, msg.cueBall), stateId: room.state.stateId + 1 };
-        this.move(room, next, { type: 'place', player: player.id, cueBall: msg.cueBall }, conn, msg.id);
-        return;
+        return this.move(out, room, next, { type: 'place', player: player.id, cueBall: msg.cueBall }, conn, msg.id);
       }
       case 'decide': {
         const { room, game } = this.onTurn(player, msg.room, msg.stateId);
-        this.move(room, afterMove(room.state, decide(game, player.id, msg.choice), 'played', this.now()), { type: 'decide', player: player.id, choice: msg.choice }, conn, msg.id);
-        return;
+        return this.move(out, room, afterMove(room.state, decide(game, player.id, msg.choice), 'played', this.now()), { type: 'decide', player: player.id, choice: msg.choice }, conn, msg.id);
       }
       case 'concede': {
         const { room, game } = this.inPlay(player, msg.room);
-        this.move(room, afterMove(room.state, concede(game, player.id), 'concession', this.now()), { type: 'concede', player: player.id }, conn, msg.id);
-        return;
+        return this.move(out, room, afterMove(room.state, concede(game, player.id), 'concession', this.now()), { type: 'concede', player: player.id }, conn, msg.id);
       }
       case 'claim':
-        return this.claim(conn, player, msg);
+        return this.claim(out, conn, player, msg);
       case 'rematch':
-        return this.rematch(conn, player, msg);
+        return this.rematch(out, conn, player, msg);
       case 'chat': {
         const room = this.room(msg.room);
         if (!this.seated(room, player.id) && !room.spectators.has(conn)) throw new ServiceError('not-seated', 'only the players and spectators of a room may chat there');
         this.chatLimits.take(player.id, room.state.id, this.now());
-        this.send(this.members(room), { type: 'chat', room: room.state.id, from: player, text: msg.text, at: this.now() });
+        this.send(out, this.members(room), { type: 'chat', room: room.state.id, from: player, text: msg.text, at: this.now() });
         return;
       }
     }
   }
 
-  private hello(conn: ConnId, msg: Msg<'hello'>): void {
-    if (this.lobby.playerOf(conn)) throw new ServiceError('bad-message', 'this socket has said hello already');
+  private async hello(out: Outbox, conn: ConnId, msg: Msg<'hello'>): Promise<void> {
+    if (this.lobby.playerOf(conn) || this.greeting.has(conn)) throw new ServiceError('bad-message', 'this socket has said hello already');
+    this.greeting.set(conn, true);
     let player: PlayerRef;
     let token: string;
-    if (msg.token !== undefined) {
-      const row = this.store.playerByTokenHash(hashToken(msg.token));
-      if (!row) throw new ServiceError('bad-token', 'unknown token: say hello without one to start as a new guest');
-      player = { id: String(row.id), name: row.name };
-      token = msg.token;
-      const tabs = this.options.maxTabsPerPlayer ?? MAX_TABS_PER_PLAYER;
-      if (this.lobby.socketsOf(player.id).length >= tabs) throw new ServiceError('too-many-tabs', `at most ${tabs} tabs (sockets) per player are open at once: close one, then say hello again`);
-      if (row.lastSeen === null || row.lastSeen + SEEN_EVERY_MS <= this.now()) this.touch(row.id);
-    } else {
-      const asked = msg.name === undefined ? undefined : this.freeName(msg.name);
-      this.takeGuest(conn);
-      const name = asked ?? this.madeUpName();
-      token = newToken();
-      const row = this.store.createPlayer(name, hashToken(token));
-      player = { id: String(row.id), name: row.name };
+    try {
+      if (msg.token !== undefined) {
+        const row = await this.store.playerByTokenHash(hashToken(msg.token));
+        if (!row) throw new ServiceError('bad-token', 'unknown token: say hello without one to start as a new guest');
+        player = { id: String(row.id), name: row.name };
+        token = msg.token;
+        const tabs = this.options.maxTabsPerPlayer ?? MAX_TABS_PER_PLAYER;
+        if (this.lobby.socketsOf(player.id).length >= tabs) throw new ServiceError('too-many-tabs', `at most ${tabs} tabs (sockets) per player are open at once: close one, then say hello again`);
+        if (row.lastSeen === null || row.lastSeen + SEEN_EVERY_MS <= this.now()) await this.touch(row.id);
+      } else {
+        const asked = msg.name === undefined ? undefined : await this.freeName(msg.name);
+        this.takeGuest(conn);
+        const name = asked ?? (await this.madeUpName());
+        token = newToken();
+        const row = await this.store.createPlayer(name, hashToken(token));
+        player = { id: String(row.id), name: row.name };
+      }
+      // A socket that closed while its player was looked up is not attached: it would stay connected for ever.
+      if (this.greeting.get(conn) !== true) return;
+    } finally {
+      this.greeting.delete(conn);
     }
     const back = this.lobby.attach(conn, player);
     if (back) this.lobbyChanged = true;
-    this.send([conn], { type: 'welcome', ...re(msg.id), player, token });
+    this.send(out, [conn], { type: 'welcome', ...re(msg.id), player, token });
     for (const room of this.roomsOf(player.id)) {
       room.holdsOver.delete(player.id);
-      const s = room.state;
-      // A clock stopped while nobody was there starts again for the player on turn.
-      const restart = s.status === 'playing' && s.game !== null && s.shotClock > 0 && s.deadline === null;
-      if (restart) this.settle(room, { ...s, deadline: deadlineAfter(s, this.now()) });
-      if (back || restart) this.broadcastRoom(room);
-      else this.send([conn], { type: 'room', room: this.view(room) });
+      await this.inRoom(room.state.id, async () => {
+        const s = room.state;
+        if (this.lobby.rooms.get(s.id) !== room) return;
+        // A clock stopped while nobody was there starts again for the player on turn.
+        const restart = s.status === 'playing' && s.game !== null && s.shotClock > 0 && s.deadline === null;
+        if (restart) {
+          try {
+            await this.settle(room, { ...s, deadline: deadlineAfter(s, this.now()) });
+          } catch (err) {
+            if (!(err instanceof StaleState)) this.log(`restarting the clock of room ${s.id}: ${(err as Error).stack ?? String(err)}`);
+          }
+        }
+        if (back || restart) this.broadcastRoom(out, room);
+        else this.send(out, [conn], { type: 'room', room: this.view(room) });
+      });
     }
   }
 
-  /** Notes that a player was here; a failed write (the disk) does not refuse their hello. */
-  private touch(id: number): void {
+  /** Notes that a player was here; a failed write (the database) does not refuse their hello. */
+  private async touch(id: number): Promise<void> {
     try {
-      this.store.touchPlayer(id);
+      await this.store.touchPlayer(id);
     } catch (err) {
       this.log(`last seen of player ${id}: ${(err as Error).stack ?? String(err)}`);
     }
@@ -358,44 +488,50 @@ export class GameService {
    * A name asked for, normalised: refused when blank-looking or too long once normalised, or when
    * it looks like another player's name (the same in another case, or with lookalike letters).
    */
-  private freeName(raw: string, self = 0): string {
+  private async freeName(raw: string, self = 0): Promise<string> {
     const name = normalizeName(raw);
     const problem = nameProblem(name);
     if (problem !== undefined) throw new ServiceError('bad-name', problem);
     if (looksLikeComputer(name)) throw new ServiceError('name-taken', `the name "${name}" is the computer's`);
-    if (this.store.nameOwner(name, self) !== undefined) throw new ServiceError('name-taken', `the name "${name}" is taken, or one that looks like it`);
+    if ((await this.store.nameOwner(name, self)) !== undefined) throw new ServiceError('name-taken', `the name "${name}" is taken, or one that looks like it`);
     return name;
   }
 
   /** A new name for the player: unique by its lookalike keys, shown in every room they sit in. */
-  private rename(conn: ConnId, player: PlayerRef, msg: Msg<'rename'>): void {
+  private async rename(out: Outbox, conn: ConnId, player: PlayerRef, msg: Msg<'rename'>): Promise<void> {
     // Their own name in another case or with lookalikes is theirs to take.
-    const name = this.freeName(msg.name, Number(player.id));
-    this.store.renamePlayer(Number(player.id), name);
+    const name = await this.freeName(msg.name, Number(player.id));
+    await this.store.renamePlayer(Number(player.id), name);
     const renamed = { id: player.id, name };
     this.lobby.rename(renamed);
     for (const room of this.roomsOf(player.id)) {
-      const next = { ...room.state, seats: room.state.seats.map((p) => (p.id === player.id ? renamed : p)) };
-      this.store.saveChanges(this.change(next));
-      room.state = next;
-      this.broadcastRoom(room);
+      await this.inRoom(room.state.id, async () => {
+        if (this.lobby.rooms.get(room.state.id) !== room || !this.seated(room, player.id)) return;
+        try {
+          await this.settle(room, { ...room.state, seats: room.state.seats.map((p) => (p.id === player.id ? renamed : p)) });
+        } catch (err) {
+          // The name is theirs already; a room that could not be rewritten shows it after its next change.
+          this.log(`renaming in room ${room.state.id}: ${(err as Error).message}`);
+        }
+        this.broadcastRoom(out, room);
+      });
     }
     const others = this.lobby.socketsOf(player.id).filter((c) => c !== conn);
-    this.send(others, { type: 'player', player: renamed });
-    this.send([conn], { type: 'player', ...re(msg.id), player: renamed });
+    this.send(out, others, { type: 'player', player: renamed });
+    this.send(out, [conn], { type: 'player', ...re(msg.id), player: renamed });
     this.lobbyChanged = true;
   }
 
   /** A free made-up name; a few tries, as a collision in 31^8 names is all but impossible. */
-  private madeUpName(): string {
+  private async madeUpName(): Promise<string> {
     for (let i = 0; i < GUEST_NAME_TRIES; i++) {
       const name = guestName();
-      if (this.store.nameOwner(name) === undefined) return name;
+      if ((await this.store.nameOwner(name)) === undefined) return name;
     }
     throw new Error(`no free guest name in ${GUEST_NAME_TRIES} tries`);
   }
 
-  private create(conn: ConnId, player: PlayerRef, msg: Msg<'create'>): void {
+  private async create(out: Outbox, conn: ConnId, player: PlayerRef, msg: Msg<'create'>): Promise<void> {
     const level = msg.computer;
     if (level !== undefined && !isLevel(level)) throw new ServiceError('bad-message', 'computer: must be a level from 1 to 5 (a whole number)');
     if (level !== undefined && !this.options.computer) throw new ServiceError('bad-message', 'computer: this server does not run the computer opponent');
@@ -403,7 +539,8 @@ export class GameService {
     for (const room of this.lobby.rooms.values()) {
       if (room.state.createdBy === player.id && (room.state.status === 'waiting' || room.state.status === 'playing')) open++;
     }
-    if (open >= MAX_OPEN_ROOMS_PER_PLAYER) throw new ServiceError('too-many-rooms', `at most ${MAX_OPEN_ROOMS_PER_PLAYER} open rooms per player`);
+    // Counted here first (no round trip for the common refusal); the store's count is the one that holds across processes.
+    if (open >= MAX_OPEN_ROOMS_PER_PLAYER) throw tooManyRooms();
     const state: RoomState = {
       id: randomBytes(6).toString('base64url'),
       kind: msg.kind,
@@ -429,21 +566,25 @@ export class GameService {
       closesAt: null,
       tally: EMPTY_TALLY,
     };
-    const computer = level === undefined ? undefined : this.computerPlayer(level);
+    const computer = level === undefined ? undefined : await this.computerPlayer(level);
     const seated: RoomState = computer ? { ...state, seats: [player, computer], computer: { id: computer.id, level: level! } } : state;
-    this.store.createRoom({ ...seated, createdBy: Number(player.id), state: JSON.stringify(seated) });
+    try {
+      await this.store.createRoom({ ...seated, createdBy: Number(player.id), state: JSON.stringify(seated) });
+    } catch (err) {
+      throw err instanceof TooManyRoomsError ? tooManyRooms() : err;
+    }
     const room = this.addRoom(new Room(seated));
     if (!state.private) this.lobbyChanged = true;
     // Against the computer the game starts at once, the person breaking.
-    if (computer) this.startMatch(room, { ...seated, order: [player.id, computer.id] }, conn, msg.id);
-    else this.broadcastRoom(room, conn, msg.id);
+    if (computer) await this.inRoom(seated.id, () => this.startMatch(out, room, { ...seated, order: [player.id, computer.id] }, conn, msg.id));
+    else this.broadcastRoom(out, room, conn, msg.id);
   }
 
   /** The computer's stored player at a level (made on first use). */
-  private computerPlayer(level: Level): PlayerRef {
+  private async computerPlayer(level: Level): Promise<PlayerRef> {
     let p = this.computers.get(level);
     if (!p) {
-      const row = this.store.computerPlayer(level, computerName(level), hashToken(newToken()));
+      const row = await this.store.computerPlayer(level, computerName(level), hashToken(newToken()));
       p = { id: String(row.id), name: row.name };
       this.computers.set(level, p);
       this.computerIds.add(p.id);
@@ -480,54 +621,64 @@ export class GameService {
       })
       .then((decision) => {
         if (room.thinking !== thinking) return;
-        thinking.timer = setTimeout(() => this.computerPlays(room, thinking, decision), Math.max(0, playAt - this.now()));
+        // Played in the room's queue, after whatever came before it there.
+        const play = () => this.inRoom(s.id, () => this.computerPlays(room, thinking, decision)).catch((err: unknown) => this.log(`computer in room ${s.id}: ${(err as Error).stack ?? String(err)}`));
+        thinking.timer = setTimeout(play, Math.max(0, playAt - this.now()));
         thinking.timer.unref?.();
       })
       .catch((err: unknown) => this.log(`computer in room ${s.id}: ${(err as Error).stack ?? String(err)}`));
   }
 
   /** Plays the computer's decision if the room is still where it was; a refused one gives way to a fallback. */
-  private computerPlays(room: Room, thinking: NonNullable<Room['thinking']>, decision: Decision): void {
+  private async computerPlays(room: Room, thinking: NonNullable<Room['thinking']>, decision: Decision): Promise<void> {
     const s = room.state;
     if (room.thinking !== thinking || this.lobby.rooms.get(s.id) !== room) return;
     if (s.status !== 'playing' || s.game === null || s.stateId !== thinking.stateId || s.game.turn !== s.computer?.id) return;
     const me = s.seats.find((p) => p.id === s.computer!.id)!;
     const game = s.game;
-    const tries: (() => void)[] = [
-      () => this.playDecision(room, game, me, decision),
-      () => this.playDecision(room, game, me, fallbackDecision(game)),
-      () => this.move(room, afterMove(s, shotClockExpired(game), 'played', this.now()), { type: 'clock', player: me.id }),
+    const tries: ((out: Outbox) => Promise<void>)[] = [
+      (out) => this.playDecision(out, room, game, me, decision),
+      (out) => this.playDecision(out, room, game, me, fallbackDecision(game)),
+      (out) => this.move(out, room, afterMove(s, shotClockExpired(game), 'played', this.now()), { type: 'clock', player: me.id }),
     ];
     for (const [i, attempt] of tries.entries()) {
+      // Each try has its own outbox: a refused one sends nothing.
+      const out: Outbox = [];
       try {
-        attempt();
-        break;
+        await attempt(out);
+        this.emit(out);
+        return;
       } catch (err) {
-        this.out = [];
+        if (err instanceof StaleState) {
+          // Another writer moved the room on: its new state is the room's, nothing of this decision is played.
+          this.log(`computer in room ${s.id}: ${err.message}`);
+          const fresh: Outbox = [];
+          this.broadcastRoom(fresh, room);
+          this.emit(fresh);
+          return;
+        }
         const last = i === tries.length - 1;
         this.log(`computer in room ${s.id}: move ${i + 1} refused: ${(err as Error).message}${last ? '; tried again at the next tick' : ''}`);
         if (last) room.thinking = null;
       }
     }
-    this.outlet?.(this.flush());
   }
 
   /** The computer's decision through the person's path: the stroke validated as a message is, or the choice. */
-  private playDecision(room: Room, game: Game, me: PlayerRef, d: Decision): void {
+  private async playDecision(out: Outbox, room: Room, game: Game, me: PlayerRef, d: Decision): Promise<void> {
     if ('choice' in d) {
-      this.move(room, afterMove(room.state, decide(game, me.id, d.choice), 'played', this.now()), { type: 'decide', player: me.id, choice: d.choice });
-      return;
+      return this.move(out, room, afterMove(room.state, decide(game, me.id, d.choice), 'played', this.now()), { type: 'decide', player: me.id, choice: d.choice });
     }
     const { player: _player, ...stroke } = d.shot;
     const input = v.parse(ShotSchema, stroke);
     const cueBall = d.cueBall === undefined ? undefined : v.parse(PointSchema, d.cueBall);
-    this.stroke(room, game, me, input, cueBall);
+    return this.stroke(out, room, game, me, input, cueBall);
   }
 
-  private join(conn: ConnId, player: PlayerRef, msg: Msg<'join'>): void {
+  private async join(out: Outbox, conn: ConnId, player: PlayerRef, msg: Msg<'join'>): Promise<void> {
     const room = this.room(msg.room);
     if (this.seated(room, player.id)) {
-      this.send([conn], { type: 'room', ...re(msg.id), room: this.view(room) });
+      this.send(out, [conn], { type: 'room', ...re(msg.id), room: this.view(room) });
       return;
     }
     if (room.state.status !== 'waiting' || room.state.seats.length >= 2) throw new ServiceError('room-full', `room ${msg.room} has both its players`);
@@ -536,35 +687,42 @@ export class GameService {
     for (const c of this.lobby.socketsOf(player.id)) {
       if (room.spectators.delete(c)) this.watching.get(c)?.delete(room.state.id);
     }
-    this.startMatch(room, { ...room.state, seats, order: seats.map((p) => p.id) }, conn, msg.id);
+    await this.startMatch(out, room, { ...room.state, seats, order: seats.map((p) => p.id) }, conn, msg.id);
     this.index(room);
   }
 
   /** A new match in the room: the first of `order` breaks. */
-  private startMatch(room: Room, base: RoomState, conn: ConnId, id: Re): void {
-    room.thinking = null;
+  private async startMatch(out: Outbox, room: Room, base: RoomState, conn: ConnId, id: Re): Promise<void> {
     const now = this.now();
     const seeded: RoomState = { ...base, seed: randomSeed(), frame: 0, frames: base.kind === 'snooker' ? {} : null, rematch: [], winner: null, how: null, left: [], closesAt: null, tally: EMPTY_TALLY, status: 'playing' };
     const started: RoomState = { ...seeded, stateId: base.stateId + 1, game: gameFor(seeded, 0) };
     const [a, b] = started.order;
     let next: RoomState = { ...started, deadline: deadlineAfter(started, now) };
     const start = JSON.stringify(started.game);
-    this.store.startMatch({ roomId: started.id, kind: started.kind, raceTo: started.raceTo, player1: Number(a), player2: Number(b), seed: started.seed, start }, (matchId) => {
-      next = { ...next, matchId };
-      return this.change(next);
-    });
+    const expect = room.state.stateId;
+    try {
+      await this.store.startMatch({ roomId: started.id, kind: started.kind, raceTo: started.raceTo, player1: Number(a), player2: Number(b), seed: started.seed, start }, (matchId) => {
+        next = { ...next, matchId };
+        return { roomId: next.id, status: next.status, state: JSON.stringify(next), expectStateId: expect };
+      });
+    } catch (err) {
+      if (err instanceof StaleRoomError) await this.stale(room);
+      throw err;
+    }
     room.state = next;
-    this.broadcastRoom(room, conn, id);
+    room.thinking = null;
+    room.outcome = null;
+    this.broadcastRoom(out, room, conn, id);
     this.lobbyChanged = true;
     this.computerTurn(room);
   }
 
-  private watch(conn: ConnId, msg: Msg<'watch'>): void {
+  private async watch(out: Outbox, conn: ConnId, msg: Msg<'watch'>): Promise<void> {
     const room = this.room(msg.room);
     const player = this.lobby.playerOf(conn);
     if (player && this.seated(room, player.id)) {
       // A player's own room: its state, without counting them as a spectator.
-      this.send([conn], { type: 'room', ...re(msg.id), room: this.view(room) });
+      this.send(out, [conn], { type: 'room', ...re(msg.id), room: this.view(room) });
       return;
     }
     room.spectators.add(conn);
@@ -572,16 +730,16 @@ export class GameService {
     if (!set) this.watching.set(conn, (set = new Set()));
     set.add(room.state.id);
     // The new spectator gets the room at once; the others see the count at the next tick.
-    this.send([conn], { type: 'room', ...re(msg.id), room: this.view(room) });
+    this.send(out, [conn], { type: 'room', ...re(msg.id), room: this.view(room) });
     this.roomsChanged.add(room);
     if (!room.state.private) this.lobbyChanged = true;
   }
 
-  private leave(conn: ConnId, player: PlayerRef, msg: Msg<'leave'>): void {
+  private async leave(out: Outbox, conn: ConnId, player: PlayerRef, msg: Msg<'leave'>): Promise<void> {
     const room = this.room(msg.room);
     if (room.spectators.delete(conn)) {
       this.watching.get(conn)?.delete(room.state.id);
-      this.send([conn], { type: 'left', ...re(msg.id), room: room.state.id });
+      this.send(out, [conn], { type: 'left', ...re(msg.id), room: room.state.id });
       this.roomsChanged.add(room);
       this.lobbyChanged = true;
       return;
@@ -590,49 +748,81 @@ export class GameService {
     const s = room.state;
     if (s.status === 'waiting') {
       const seats = s.seats.filter((p) => p.id !== player.id);
-      this.settle(room, { ...s, seats, status: seats.length === 0 ? 'closed' : 'waiting' });
+      await this.settle(room, { ...s, seats, status: seats.length === 0 ? 'closed' : 'waiting' });
     } else if (s.status === 'playing' && s.game) {
       // Leaving a game in play concedes it (and the concession tells the room).
       const conceded = afterMove(s, concede(s.game, player.id), 'concession', this.now());
-      this.move(room, { ...conceded, left: [player.id] }, { type: 'concede', player: player.id });
+      await this.move(out, room, { ...conceded, left: [player.id] }, { type: 'concede', player: player.id });
       this.seatsOf.get(player.id)?.delete(s.id);
-      this.send([conn], { type: 'left', ...re(msg.id), room: s.id });
+      this.send(out, [conn], { type: 'left', ...re(msg.id), room: s.id });
       return;
     } else if (s.status === 'over' && !s.left.includes(player.id)) {
       // Once both players have left a finished room it closes.
       const left = [...s.left, player.id];
       const gone = left.length + (s.computer ? 1 : 0);
-      this.settle(room, { ...s, left, status: gone >= s.seats.length ? 'closed' : 'over' });
+      await this.settle(room, { ...s, left, status: gone >= s.seats.length ? 'closed' : 'over' });
     }
     this.seatsOf.get(player.id)?.delete(s.id);
-    this.send([conn], { type: 'left', ...re(msg.id), room: s.id });
-    if (room.state.status !== 'closed') this.broadcastRoom(room);
+    this.send(out, [conn], { type: 'left', ...re(msg.id), room: s.id });
+    if (room.state.status !== 'closed') this.broadcastRoom(out, room);
   }
 
   /** A change of the room with no move in it (seats, leaving, closing): stored, made current, and a closed room forgotten. */
-  private settle(room: Room, next: RoomState): void {
-    this.store.saveChanges(this.change(next));
-    room.state = next;
-    if (next.status === 'closed') {
-      this.lobby.rooms.delete(next.id);
-      for (const p of next.seats) this.seatsOf.get(p.id)?.delete(next.id);
-      for (const c of room.spectators) this.watching.get(c)?.delete(next.id);
-    }
+  private async settle(room: Room, next: RoomState): Promise<void> {
+    await this.commit(room, next, [await this.change(next, room.state.stateId)]);
     this.lobbyChanged = true;
   }
 
-  private shot(conn: ConnId, player: PlayerRef, msg: Msg<'shot'>): void {
+  /**
+   * The one way a room's state changes: the changes stored, each guarded by the stateId the room
+   * had, and only then `next` made current. A room another writer changed first is reloaded
+   * from the store and the command refused (stale-state); a failed write changes nothing.
+   */
+  private async commit(room: Room, next: RoomState, changes: readonly RoomChange[]): Promise<void> {
+    try {
+      await this.store.saveChanges(...changes);
+    } catch (err) {
+      if (err instanceof StaleRoomError) await this.stale(room);
+      throw err;
+    }
+    room.state = next;
+    if (next.status === 'closed') this.forget(room);
+  }
+
+  /** Takes the room as last committed in the store, after a write found it changed; throws StaleState. */
+  private async stale(room: Room): Promise<never> {
+    const row = await this.store.room(room.state.id);
+    if (row) {
+      const state = JSON.parse(row.state) as RoomState;
+      room.outcome = state.status === 'over' && state.matchId !== null ? outcomeOf(await this.store.matchResult(state.matchId)) : null;
+      room.state = state;
+      room.thinking = null;
+      this.index(room);
+      if (state.status === 'closed') this.forget(room);
+    }
+    this.lobbyChanged = true;
+    throw new StaleState(room);
+  }
+
+  /** A closed room leaves the lobby, its seats and its spectators' lists. */
+  private forget(room: Room): void {
+    const s = room.state;
+    if (this.lobby.rooms.get(s.id) === room) this.lobby.rooms.delete(s.id);
+    for (const p of s.seats) this.seatsOf.get(p.id)?.delete(s.id);
+    for (const c of room.spectators) this.watching.get(c)?.delete(s.id);
+  }
+
+  private async shot(out: Outbox, conn: ConnId, player: PlayerRef, msg: Msg<'shot'>): Promise<void> {
     const { room, game } = this.onTurn(player, msg.room, msg.stateId);
-    this.stroke(room, game, player, msg.shot, msg.cueBall, conn, msg.id);
+    return this.stroke(out, room, game, player, msg.shot, msg.cueBall, conn, msg.id);
   }
 
   /** A stroke of the player on turn (a person's or the computer's): simulated, judged, stored, sent. */
-  private stroke(room: Room, game: Game, player: PlayerRef, input: ShotInput, cueBall: Point | undefined, conn?: ConnId, id?: Re): void {
+  private async stroke(out: Outbox, room: Room, game: Game, player: PlayerRef, input: ShotInput, cueBall: Point | undefined, conn?: ConnId, id?: Re): Promise<void> {
     const msg = { shot: input, cueBall };
     const shot = { ...msg.shot, player: player.id };
     const played = playShot(game, shot, msg.cueBall);
     const now = this.now();
-    room.stillAt = now + Math.ceil(played.outcome.duration * 1000);
     // The next player's clock starts once the balls have stopped.
     const moved = afterMove(room.state, played.game, 'played', now, now + Math.ceil(played.outcome.duration * 1000));
     const action: MatchAction = { type: 'shot', player: player.id, shot: msg.shot, ...(msg.cueBall ? { cueBall: msg.cueBall } : {}), hash: played.outcome.hash };
@@ -640,10 +830,11 @@ export class GameService {
     const frameOver = moved.game !== played.game;
     const first: RoomState = frameOver ? { ...moved, game: played.game, frame: room.state.frame, deadline: null } : moved;
     const after: RoomState = frameOver ? { ...moved, stateId: moved.stateId + 1 } : moved;
-    const changes = [this.change(first, action)];
-    if (frameOver) changes.push(this.change(after, { type: 'frame', players: after.game!.players, seed: after.seed + after.frame }));
-    this.store.saveChanges(...changes);
-    room.state = after;
+    const changes = [await this.change(first, room.state.stateId, action)];
+    if (frameOver) changes.push(await this.change(after, first.stateId, { type: 'frame', players: after.game!.players, seed: after.seed + after.frame }));
+    await this.commit(room, after, changes);
+    room.stillAt = now + Math.ceil(played.outcome.duration * 1000);
+    if (changes.some((c) => c.result)) await this.learnOutcome(room);
     const o = played.outcome;
     const message: ServerMessage = {
       type: 'shot',
@@ -658,16 +849,29 @@ export class GameService {
     };
     const members = this.members(room);
     this.send(
+      out,
       members.filter((c) => c !== conn),
       message,
     );
-    if (conn !== undefined) this.send([conn], { ...message, ...re(id) });
-    if (frameOver || after.status !== 'playing') this.broadcastRoom(room);
+    if (conn !== undefined) this.send(out, [conn], { ...message, ...re(id) });
+    if (frameOver || after.status !== 'playing') this.broadcastRoom(out, room);
     if (after.status !== 'playing') this.lobbyChanged = true;
     this.computerTurn(room);
   }
 
-  private claim(conn: ConnId, player: PlayerRef, msg: Msg<'claim'>): void {
+  /** Whether the match just finished counted for the ratings, as the store decided; kept on the room for its views. */
+  private async learnOutcome(room: Room): Promise<void> {
+    const matchId = room.state.matchId;
+    if (matchId === null) return;
+    try {
+      room.outcome = outcomeOf(await this.store.matchResult(matchId));
+    } catch (err) {
+      // The result is stored; its view only lacks the rated line until the room is read again.
+      this.log(`result of match ${matchId}: ${(err as Error).stack ?? String(err)}`);
+    }
+  }
+
+  private async claim(out: Outbox, conn: ConnId, player: PlayerRef, msg: Msg<'claim'>): Promise<void> {
     const { room, game } = this.inPlay(player, msg.room);
     const other = room.state.seats.find((p) => p.id !== player.id)!;
     if (this.isComputer(other.id)) throw new ServiceError('not-claimable', `${other.name} never leaves its seat`);
@@ -675,10 +879,10 @@ export class GameService {
     if (dropped === undefined) throw new ServiceError('not-claimable', `${other.name} is connected`);
     const until = dropped + this.options.seatHoldMs;
     if (this.now() < until) throw new ServiceError('not-claimable', `${other.name}'s seat is held for ${Math.ceil((until - this.now()) / 1000)} s more`);
-    this.move(room, afterMove(room.state, claimGame(game, player.id), 'claim', this.now()), { type: 'claim', player: player.id }, conn, msg.id);
+    return this.move(out, room, afterMove(room.state, claimGame(game, player.id), 'claim', this.now()), { type: 'claim', player: player.id }, conn, msg.id);
   }
 
-  private rematch(conn: ConnId, player: PlayerRef, msg: Msg<'rematch'>): void {
+  private async rematch(out: Outbox, conn: ConnId, player: PlayerRef, msg: Msg<'rematch'>): Promise<void> {
     const room = this.room(msg.room);
     if (!this.seated(room, player.id)) throw new ServiceError('not-seated', `you are not a player of room ${msg.room}`);
     const s = room.state;
@@ -689,37 +893,39 @@ export class GameService {
     const asked = [...new Set([...s.rematch, player.id, ...willing])];
     if (asked.length < 2) {
       const next = { ...s, rematch: asked };
-      this.store.saveChanges(this.change(next));
-      room.state = next;
-      this.broadcastRoom(room, conn, msg.id);
+      await this.commit(room, next, [await this.change(next, s.stateId)]);
+      this.broadcastRoom(out, room, conn, msg.id);
       return;
     }
     // The other player breaks the new match.
-    this.startMatch(room, { ...s, order: [...s.order].reverse() }, conn, msg.id);
+    return this.startMatch(out, room, { ...s, order: [...s.order].reverse() }, conn, msg.id);
   }
 
   /** Makes a move's state current: stored with its action (and the result, when it ends the match), then sent. */
-  private move(room: Room, next: RoomState, action: MatchAction, conn?: ConnId, id?: Re): void {
-    this.store.saveChanges(this.change(next, action));
-    room.state = next;
-    this.broadcastRoom(room, conn, id);
+  private async move(out: Outbox, room: Room, next: RoomState, action: MatchAction, conn?: ConnId, id?: Re): Promise<void> {
+    const change = await this.change(next, room.state.stateId, action);
+    await this.commit(room, next, [change]);
+    if (change.result) await this.learnOutcome(room);
+    this.broadcastRoom(out, room, conn, id);
     if (next.status !== 'playing') this.lobbyChanged = true;
     this.computerTurn(room);
   }
 
   /**
-   * The store's record of a room's new state: the action that made it in the match's log and,
-   * when that action ends the match, its result.
+   * The store's record of a room's new state, written only while the stored room is at `expect`
+   * (the stateId its writer read): the action that made it in the match's log and, when that
+   * action ends the match, its result.
    */
-  private change(next: RoomState, action?: MatchAction): RoomChange {
+  private async change(next: RoomState, expect: number, action?: MatchAction): Promise<RoomChange> {
     const logged = action !== undefined && next.matchId !== null;
     const ends = logged && next.status === 'over' && next.winner !== null;
     return {
       roomId: next.id,
       status: next.status,
       state: JSON.stringify(next),
+      expectStateId: expect,
       ...(logged ? { action: { matchId: next.matchId!, seq: next.stateId, json: JSON.stringify(action) } } : {}),
-      ...(ends ? { result: this.result(next, action!) } : {}),
+      ...(ends ? { result: await this.result(next, action!) } : {}),
     };
   }
 
@@ -728,12 +934,12 @@ export class GameService {
    * each player took RATED_MIN_SHOTS shots, and the server's clock ran the minimum time of play
    * between the start and the result (the store adds the pair's daily limit).
    */
-  private result(s: RoomState, last: MatchAction): MatchResult {
+  private async result(s: RoomState, last: MatchAction): Promise<MatchResult> {
     const matchId = s.matchId!;
-    const shots = this.store.shotCounts(matchId);
+    const [shots, started] = await Promise.all([this.store.shotCounts(matchId), this.store.matchStartedAt(matchId)]);
     if (last.type === 'shot') shots.set(last.player, (shots.get(last.player) ?? 0) + 1);
     const loser = s.order.find((p) => p !== s.winner)!;
-    const startedAt = this.store.matchStartedAt(matchId) ?? this.now();
+    const startedAt = started ?? this.now();
     let unrated: UnratedReason | undefined;
     if (s.computer) unrated = 'computer';
     else if (!s.order.every((p) => (shots.get(p) ?? 0) >= RATED_MIN_SHOTS)) unrated = 'few-shots';
@@ -811,9 +1017,8 @@ export class GameService {
       const dropped = this.lobby.droppedSince(p.id);
       return dropped === undefined ? { connected: true } : { connected: false, heldUntil: dropped + this.options.seatHoldMs };
     });
-    const s = room.state;
-    const result = s.status === 'over' && s.matchId !== null ? this.store.matchResult(s.matchId) : undefined;
-    if (result === undefined) return view;
+    const result = room.state.status === 'over' ? room.outcome : null;
+    if (result === null) return view;
     return result.unrated === null ? { ...view, rated: result.rated } : { ...view, rated: result.rated, unrated: unratedSentence(result.unrated, this.minPlayMs) };
   }
 
@@ -822,25 +1027,32 @@ export class GameService {
   }
 
   /** `room` to everyone there; the one who asked gets it with `re`. */
-  private broadcastRoom(room: Room, conn?: ConnId, id?: Re): void {
+  private broadcastRoom(out: Outbox, room: Room, conn?: ConnId, id?: Re): void {
     this.roomsChanged.delete(room);
     const view = this.view(room);
     const members = this.members(room);
     this.send(
+      out,
       members.filter((c) => c !== conn),
       { type: 'room', room: view },
     );
-    if (conn !== undefined) this.send([conn], { type: 'room', ...re(id), room: view });
+    if (conn !== undefined) this.send(out, [conn], { type: 'room', ...re(id), room: view });
   }
 
-  private send(to: readonly ConnId[], message: ServerMessage): void {
-    if (to.length > 0) this.out.push({ to, message });
+  private send(out: Outbox, to: readonly ConnId[], message: ServerMessage): void {
+    if (to.length > 0) out.push({ to, message });
   }
 
-  private fail(conn: ConnId, id: Re, err: unknown): void {
+  private fail(out: Outbox, conn: ConnId, id: Re, err: unknown): void {
     const e = describeError(err);
     if (e.internal) this.log(`internal error: ${(err as Error).stack ?? String(err)}`);
-    this.send([conn], { type: 'error', ...re(id), code: e.code, message: e.message });
+    this.send(out, [conn], { type: 'error', ...re(id), code: e.code, message: e.message });
+    // A room found changed in the store was reloaded: everyone there (the sender too) gets it as it now is.
+    if (err instanceof StaleState) {
+      const room = err.room;
+      if (room.state.status === 'closed') this.send(out, [conn], { type: 'left', room: room.state.id });
+      else this.broadcastRoom(out, room);
+    }
   }
 
   private lobbyMessage(id?: Re): ServerMessage {
@@ -848,11 +1060,15 @@ export class GameService {
     return { type: 'lobby', ...re(id), rooms, more, online: this.lobby.online() };
   }
 
-  private flush(): Delivery[] {
-    const out = this.out;
-    this.out = [];
-    return out;
-  }
+}
+
+function tooManyRooms(): ServiceError {
+  return new ServiceError('too-many-rooms', `at most ${MAX_OPEN_ROOMS_PER_PLAYER} open rooms per player`);
+}
+
+/** What a room's view says of its finished match's rating, from the stored result. */
+function outcomeOf(result: StoredResult | undefined): Room['outcome'] {
+  return result === undefined ? null : { rated: result.rated, unrated: result.unrated };
 }
 
 function re(id: Re): { re?: string | number } {

@@ -49,6 +49,11 @@ export interface AsyncStore {
   deletePlayers(ids: readonly number[]): Promise<number>;
 
   // Rooms and matches.
+  /**
+   * A new room; rejects with TooManyRoomsError, writing nothing, when its creator has
+   * OPEN_ROOMS_PER_PLAYER rooms waiting or in play already (counted in the same transaction, so
+   * the limit holds however many processes create at once).
+   */
   createRoom(r: NewRoom): Promise<void>;
   /** Starts a match and returns its id. */
   createMatch(m: NewMatch): Promise<number>;

@@ -39,6 +39,7 @@ export const SQL = {
   insertComputer: 'INSERT INTO computers (level, player_id) VALUES ($1, $2)',
   computersAmong: 'SELECT count(*) AS n FROM computers WHERE player_id IN ($1, $2)',
 
+  openRoomsOf: "SELECT COUNT(*)::int AS n FROM rooms WHERE created_by = $1 AND status IN ('waiting', 'playing')",
   insertRoom: 'INSERT INTO rooms (id, kind, race_to, private, shot_clock, created_by, created_at, status, state, updated_at) VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10)',
   updateRoom: 'UPDATE rooms SET status = $1, state = $2, updated_at = $3 WHERE id = $4',
   // jsonb compares numbers by value, and a state without a stateId matches nothing (no cast fails).

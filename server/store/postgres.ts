@@ -16,7 +16,9 @@ import {
   PRACTICE_SEED_TTL_MS,
   PracticeSeedError,
   SEED_SWEEP_MS,
+  OPEN_ROOMS_PER_PLAYER,
   StaleRoomError,
+  TooManyRoomsError,
   type ActionRow,
   type BoardRow,
   type IdlePage,
@@ -54,6 +56,8 @@ const TYPES: pg.CustomTypesConfig = {
 const LOCK_PLAYER = 1;
 const LOCK_COMPUTER = 2;
 const LOCK_NAME_KEYS = 3;
+/** A player's rooms: their count against OPEN_ROOMS_PER_PLAYER and the new one's insert. */
+const LOCK_ROOMS = 4;
 
 /** PostgreSQL's error code for a foreign key violation. */
 const FOREIGN_KEY_VIOLATION = '23503';
@@ -214,9 +218,14 @@ export class PostgresStore implements AsyncStore {
     });
   }
 
+  /** As Store.createRoom; the creator's lock makes the count and the insert one step across processes. */
   async createRoom(r: NewRoom): Promise<void> {
-    const now = this.now();
-    await this.pool.query(SQL.insertRoom, [r.id, r.kind, r.raceTo, r.private ? 1 : 0, r.shotClock, r.createdBy, now, r.status, r.state, now]);
+    await this.tx(async (q) => {
+      await q.query('SELECT pg_advisory_xact_lock($1, $2)', [LOCK_ROOMS, r.createdBy | 0]);
+      if ((await this.one<{ n: number }>(q, SQL.openRoomsOf, [r.createdBy]))!.n >= OPEN_ROOMS_PER_PLAYER) throw new TooManyRoomsError(r.createdBy);
+      const now = this.now();
+      await q.query(SQL.insertRoom, [r.id, r.kind, r.raceTo, r.private ? 1 : 0, r.shotClock, r.createdBy, now, r.status, r.state, now]);
+    });
   }
 
   async createMatch(m: NewMatch): Promise<number> {

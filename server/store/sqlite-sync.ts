@@ -11,7 +11,9 @@ import {
   PRACTICE_SEED_TTL_MS,
   PracticeSeedError,
   SEED_SWEEP_MS,
+  OPEN_ROOMS_PER_PLAYER,
   StaleRoomError,
+  TooManyRoomsError,
   type BoardRow,
   type IdlePage,
   type MatchResult,
@@ -85,6 +87,7 @@ export class Store {
       insertRoom: db.prepare<[string, string, number, number, number, number, number, string, string, number]>(
         'INSERT INTO rooms (id, kind, race_to, private, shot_clock, created_by, created_at, status, state, updated_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)',
       ),
+      openRoomsOf: db.prepare<[number], { n: number }>("SELECT COUNT(*) AS n FROM rooms WHERE created_by = ? AND status IN ('waiting', 'playing')"),
       updateRoom: db.prepare<[string, string, number, string]>('UPDATE rooms SET status = ?, state = ?, updated_at = ? WHERE id = ?'),
       updateRoomAt: db.prepare<[string, string, number, string, number]>(
         "UPDATE rooms SET status = ?, state = ?, updated_at = ? WHERE id = ? AND json_extract(state, '$.stateId') = ?",
@@ -307,9 +310,15 @@ export class Store {
     })();
   }
 
+  /** A new room, unless its creator has OPEN_ROOMS_PER_PLAYER open already (TooManyRoomsError): counted and written in one write transaction. */
   createRoom(r: NewRoom): void {
-    const now = this.now();
-    this.s.insertRoom.run(r.id, r.kind, r.raceTo, r.private ? 1 : 0, r.shotClock, r.createdBy, now, r.status, r.state, now);
+    this.db
+      .transaction(() => {
+        if (this.s.openRoomsOf.get(r.createdBy)!.n >= OPEN_ROOMS_PER_PLAYER) throw new TooManyRoomsError(r.createdBy);
+        const now = this.now();
+        this.s.insertRoom.run(r.id, r.kind, r.raceTo, r.private ? 1 : 0, r.shotClock, r.createdBy, now, r.status, r.state, now);
+      })
+      .immediate();
   }
 
   /** Starts a match and returns its id. */

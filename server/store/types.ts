@@ -1,5 +1,6 @@
 // The store's rows, inputs and rules shared by its implementations (SQLite and PostgreSQL).
 import type { UnratedReason } from '../ratings/policy.ts';
+import { MAX_OPEN_ROOMS_PER_PLAYER } from '../../shared/protocol/index.ts';
 
 export interface PlayerRow {
   readonly id: number;
@@ -91,6 +92,16 @@ export class StaleRoomError extends Error {
     readonly expected: number,
   ) {
     super(`room ${roomId} is no longer at stateId ${expected}: another writer changed it first`);
+  }
+}
+
+/** Rooms waiting or in play one player may have created at once; createRoom refuses another. */
+export const OPEN_ROOMS_PER_PLAYER = MAX_OPEN_ROOMS_PER_PLAYER;
+
+/** Thrown by createRoom when its creator has OPEN_ROOMS_PER_PLAYER open rooms already; nothing is written. */
+export class TooManyRoomsError extends Error {
+  constructor(readonly player: number) {
+    super(`player ${player} has ${OPEN_ROOMS_PER_PLAYER} open rooms already`);
   }
 }
 

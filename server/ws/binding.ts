@@ -28,6 +28,8 @@ const CLOSE_GRACE_MS = 1000;
 
 interface Conn {
   readonly socket: WebSocket;
+  /** The socket's last operation in the service: the next waits for it, so its deliveries go out in order. */
+  queue: Promise<void>;
   readonly bucket: TokenBucket;
   missedPings: number;
   welcomed: boolean;
@@ -40,12 +42,16 @@ export function bindWebSocket(wss: WebSocketServer, service: GameService, option
   let nextId = 1;
 
   // The service answers every command itself; this guard only keeps a bug from taking the process down.
-  const safely = (what: string, run: () => readonly Delivery[]): void => {
+  const safely = async (what: string, run: () => Promise<readonly Delivery[]> | readonly Delivery[]): Promise<void> => {
     try {
-      deliver(run());
+      deliver(await run());
     } catch (err) {
       console.error(`${what}: ${(err as Error).stack ?? String(err)}`);
     }
+  };
+  /** A socket's frames are handled one after another: each waits for the one before, and its deliveries go out after that one's. */
+  const inOrder = (conn: Conn, what: string, run: () => Promise<readonly Delivery[]> | readonly Delivery[]): void => {
+    conn.queue = conn.queue.then(() => safely(what, run));
   };
 
   const deliver = (deliveries: readonly Delivery[]): void => {
@@ -85,7 +91,7 @@ export function bindWebSocket(wss: WebSocketServer, service: GameService, option
     const release = options.perAddress.add(remote);
     const id = nextId++;
     service.open(id, remote);
-    const conn: Conn = { socket, bucket: new TokenBucket(RATE_PER_SECOND, RATE_BURST, Date.now()), missedPings: 0, welcomed: false };
+    const conn: Conn = { socket, queue: Promise.resolve(), bucket: new TokenBucket(RATE_PER_SECOND, RATE_BURST, Date.now()), missedPings: 0, welcomed: false };
     conn.helloTimer = helloDeadline(conn, options.helloMs);
     conns.set(id, conn);
     socket.on('pong', () => {
@@ -101,17 +107,17 @@ export function bindWebSocket(wss: WebSocketServer, service: GameService, option
         return;
       }
       if (isBinary) {
-        safely('reject', () => service.reject(id, 'bad-message', 'frames must be JSON text'));
+        inOrder(conn, 'reject', () => service.reject(id, 'bad-message', 'frames must be JSON text'));
         return;
       }
       const parsed = parseClientMessage(data.toString());
-      safely('handle', () => (parsed.ok ? service.handle(id, parsed.message) : service.reject(id, parsed.code, parsed.message, parsed.re)));
+      inOrder(conn, 'handle', () => (parsed.ok ? service.handle(id, parsed.message) : service.reject(id, parsed.code, parsed.message, parsed.re)));
     });
     socket.on('close', () => {
       clearTimeout(conn.helloTimer);
       conns.delete(id);
       release();
-      safely('close', () => service.close(id));
+      inOrder(conn, 'close', () => service.close(id));
     });
     socket.on('error', () => socket.terminate());
   });
@@ -126,7 +132,13 @@ export function bindWebSocket(wss: WebSocketServer, service: GameService, option
       c.socket.ping();
     }
   }, options.pingMs);
-  const ticker = setInterval(() => safely('tick', () => service.tick()), options.tickMs);
+  // A tick still running (its rooms waiting on the database) is not joined by another.
+  let ticking = false;
+  const ticker = setInterval(() => {
+    if (ticking) return;
+    ticking = true;
+    void safely('tick', () => service.tick()).finally(() => (ticking = false));
+  }, options.tickMs);
   pinger.unref();
   ticker.unref();
   return {

@@ -4,7 +4,7 @@
 // must answer each of these alike.
 import fc from 'fast-check';
 import { afterEach, expect, it } from 'vitest';
-import { PRACTICE_OPEN_SEEDS, PRACTICE_SEED_TTL_MS, PracticeSeedError, StaleRoomError, type AsyncStore, type PlayerRow, type RoomChange } from '../../server/store/index.ts';
+import { OPEN_ROOMS_PER_PLAYER, PRACTICE_OPEN_SEEDS, PRACTICE_SEED_TTL_MS, PracticeSeedError, StaleRoomError, TooManyRoomsError, type AsyncStore, type PlayerRow, type RoomChange } from '../../server/store/index.ts';
 
 export interface StoreHarness {
   readonly store: AsyncStore;
@@ -219,6 +219,24 @@ export function storeContract(openStore: () => Promise<StoreHarness>): void {
     const won = both.findIndex((s) => s.status === 'fulfilled');
     expect(JSON.parse((await stateOf('r3'))!)).toEqual({ stateId: 3, by: won === 0 ? 'one' : 'two' });
     expect((await store.matchActions(match)).map((x) => x.seq)).toEqual([1, 2, 3]);
+  });
+
+  it(`keeps a creator to ${OPEN_ROOMS_PER_PLAYER} rooms waiting or in play: of 8 created at once, exactly ${OPEN_ROOMS_PER_PLAYER} are`, async () => {
+    const { store, count } = await fresh();
+    const cid = await store.createPlayer('Cid', hash(3));
+    const room = (i: number, status = 'waiting') => ({ id: `c${i}`, kind: 'nineball', raceTo: 1, private: false, shotClock: 0, createdBy: cid.id, status, state: '{"stateId":0}' });
+    const before = await count('rooms');
+    const all = await Promise.allSettled(Array.from({ length: 8 }, (_, i) => store.createRoom(room(i))));
+    expect(all.filter((s) => s.status === 'fulfilled')).toHaveLength(OPEN_ROOMS_PER_PLAYER);
+    for (const s of all) if (s.status === 'rejected') expect(s.reason).toBeInstanceOf(TooManyRoomsError);
+    expect(await count('rooms')).toBe(before + OPEN_ROOMS_PER_PLAYER);
+    // A room over (or closed) frees its place; another creator is not held back.
+    const made = all.findIndex((s) => s.status === 'fulfilled');
+    await store.saveChanges({ roomId: `c${made}`, status: 'over', state: '{}' });
+    await store.createRoom(room(8));
+    await expect(store.createRoom(room(9))).rejects.toThrow(TooManyRoomsError);
+    const dee = await store.createPlayer('Dee', hash(4));
+    await store.createRoom({ ...room(10), createdBy: dee.id });
   });
 
   it('starts a match with its room change in one transaction: a failing change leaves no match', async () => {

@@ -28,7 +28,7 @@ afterEach(async () => {
 });
 
 describe('the computer on the server', () => {
-  it('pauses at least 0.8 s by default; the settings are read and checked', () => {
+  it('pauses at least 0.8 s by default; the settings are read and checked', async () => {
     expect(COMPUTER_PAUSE_MS).toBeGreaterThanOrEqual(800);
     const config = readConfig({});
     expect(config.computerPauseMs).toBeGreaterThanOrEqual(800);
@@ -81,7 +81,7 @@ describe('the computer on the server', () => {
     expect(await pool.think({ game: newGame('nineball', ['a', 'b'], { seed: 2 }), level: 1, seed: 3 })).toBeDefined();
   }, 60_000);
 
-  it('seeds each decision from the room and the state: the same inputs, the same seed', () => {
+  it('seeds each decision from the room and the state: the same inputs, the same seed', async () => {
     fc.assert(
       fc.property(fc.string({ maxLength: 12 }), fc.nat(), fc.nat(), (room, match, state) => {
         const s = decisionSeed(room, match, state);
@@ -92,7 +92,7 @@ describe('the computer on the server', () => {
     expect(decisionSeed('r', 1, 2)).not.toBe(decisionSeed('r', 1, 3));
   });
 
-  it('falls back on a stroke the rules take, from the start of any game', () => {
+  it('falls back on a stroke the rules take, from the start of any game', async () => {
     fc.assert(
       fc.property(fc.constantFrom(...KINDS), fc.nat(), (kind, seed) => {
         const game = newGame(kind, ['a', 'b'], { seed });
@@ -106,14 +106,14 @@ describe('the computer on the server', () => {
 
   it('plays a fallback when the thinker fails, through the person\'s path, and the service carries on', async () => {
     const out: Delivery[] = [];
-    harness = openHarness({ service: { computer: { thinker: { think: () => Promise.reject(new Error('boom')), close: async () => {} }, pauseMs: 0 } } });
+    harness = await openHarness({ service: { computer: { thinker: { think: () => Promise.reject(new Error('boom')), close: async () => {} }, pauseMs: 0 } } });
     harness.service.attach((d) => out.push(...d));
-    harness.send(1, { type: 'hello', name: 'Solo' });
-    harness.send(1, { type: 'create', kind: 'threecushion', raceTo: 2, computer: 2 });
+    await harness.send(1, { type: 'hello', name: 'Solo' });
+    await harness.send(1, { type: 'create', kind: 'threecushion', raceTo: 2, computer: 2 });
     const room = last(harness, 1, 'room').room;
     expect(room.players[1]).toMatchObject({ name: 'Computer (level 2)', connected: true });
     // A soft stroke that meets nothing: no point, the computer's turn.
-    harness.send(1, { type: 'shot', room: room.id, stateId: room.stateId, shot: { ball: 'white', heading: Math.PI / 2, speed: 0.3, side: 0, top: 0 } });
+    await harness.send(1, { type: 'shot', room: room.id, stateId: room.stateId, shot: { ball: 'white', heading: Math.PI / 2, speed: 0.3, side: 0, top: 0 } });
     expect(last(harness, 1, 'shot').game.turn).toBe(room.players[1]!.id);
     await expect.poll(() => out.some((d) => d.message.type === 'shot'), { timeout: 5000 }).toBe(true);
     const delivery = out.find((d) => d.message.type === 'shot')!;
@@ -122,27 +122,27 @@ describe('the computer on the server', () => {
     expect(its.shot.player).toBe(room.players[1]!.id);
     expect(its.re).toBeUndefined();
     // Recorded like a person's shot; the service answers on.
-    expect(harness.store.matchActions(its.match).filter((a) => (a.action as { type: string }).type === 'shot')).toHaveLength(2);
-    harness.send(1, { type: 'lobby' });
+    expect((await harness.store.matchActions(its.match)).filter((a) => (a.action as { type: string }).type === 'shot')).toHaveLength(2);
+    await harness.send(1, { type: 'lobby' });
     expect(last(harness, 1, 'lobby').rooms.map((r) => r.id)).toContain(room.id);
   });
 
   it('takes up its turn again after a restart, from the stored room', async () => {
     const never = { think: () => new Promise<never>(() => {}), close: async () => {} };
-    const first = openHarness({ service: { computer: { thinker: never, pauseMs: 0 } } });
-    first.send(1, { type: 'hello', name: 'Again' });
-    first.send(1, { type: 'create', kind: 'threecushion', raceTo: 2, computer: 1 });
+    const first = await openHarness({ service: { computer: { thinker: never, pauseMs: 0 } } });
+    await first.send(1, { type: 'hello', name: 'Again' });
+    await first.send(1, { type: 'create', kind: 'threecushion', raceTo: 2, computer: 1 });
     const room = last(first, 1, 'room').room;
-    first.send(1, { type: 'shot', room: room.id, stateId: room.stateId, shot: { ball: 'white', heading: Math.PI / 2, speed: 0.3, side: 0, top: 0 } });
+    await first.send(1, { type: 'shot', room: room.id, stateId: room.stateId, shot: { ball: 'white', heading: Math.PI / 2, speed: 0.3, side: 0, top: 0 } });
     expect(last(first, 1, 'shot').game.turn).toBe(room.players[1]!.id);
-    first.close();
+    await first.close();
     const out: Delivery[] = [];
     const answers = { think: async ({ game }: { game: Parameters<typeof fallbackDecision>[0] }) => fallbackDecision(game), close: async () => {} };
-    harness = openHarness({ dbPath: first.dbPath, service: { computer: { thinker: answers, pauseMs: 0 } } });
+    harness = await openHarness({ dbPath: first.dbPath, service: { computer: { thinker: answers, pauseMs: 0 } } });
     harness.service.attach((d) => out.push(...d));
-    harness.tick();
+    await harness.tick();
     // Nobody is connected to be told: the stroke shows in the match's log.
-    const shots = () => harness!.store.matchActions(room.match!).filter((a) => (a.action as { type: string }).type === 'shot').length;
+    const shots = async () => (await harness!.store.matchActions(room.match!)).filter((a) => (a.action as { type: string }).type === 'shot').length;
     await expect.poll(shots, { timeout: 5000 }).toBe(2);
   });
 });

