@@ -4,10 +4,10 @@
 // the tests skip with a message, unless BAIZE_REQUIRE_POSTGRES=1 (CI) makes them mandatory.
 import { execFileSync, spawn, type ChildProcess } from 'node:child_process';
 import { chmodSync, chownSync, existsSync, mkdtempSync, readdirSync, rmSync } from 'node:fs';
-import { createServer } from 'node:net';
 import { tmpdir, userInfo } from 'node:os';
 import { join } from 'node:path';
 import pg from 'pg';
+import { freePort } from './free-port.ts';
 
 export const REQUIRE_POSTGRES = process.env.BAIZE_REQUIRE_POSTGRES === '1';
 
@@ -33,17 +33,6 @@ export function postgresAvailable(): boolean {
   if (REQUIRE_POSTGRES) return true; // run and fail loudly: CI promised PostgreSQL
   console.warn("PostgreSQL tests skipped: no initdb found (apt-get install postgresql; BAIZE_REQUIRE_POSTGRES=1 makes this a failure)");
   return false;
-}
-
-async function freePort(): Promise<number> {
-  return new Promise((resolve, reject) => {
-    const s = createServer();
-    s.once('error', reject);
-    s.listen(0, '127.0.0.1', () => {
-      const port = (s.address() as { port: number }).port;
-      s.close(() => resolve(port));
-    });
-  });
 }
 
 export interface PostgresServer {
