@@ -1,5 +1,8 @@
-// The multi-process mode's shared parts (docs/scale.md): room leases and connection ids, each
-// with a one-process implementation and a Redis one.
+// The Redis building blocks of the multi-process mode (docs/scale.md): each an interface, an
+// in-memory implementation for one process and a Redis one for many.
+export { KEYS, requireId, requireMs } from './keys.ts';
+export { connectRedis, type RedisClient } from './redis.ts';
 export { MemoryConnIds, RedisConnIds, type ConnIds } from './conn-ids.ts';
-export { CONN_ID_KEY, PREFIX, roomOwnerKey } from './keys.ts';
-export { MemoryLeases, RedisLeases, type RoomLeases } from './leases.ts';
+export { MemoryRoomLeases, RedisRoomLeases, type RoomLeases } from './leases.ts';
+export { MemoryChatLimit, RedisChatLimit, type ChatLimit } from './chat-limit.ts';
+export { MemoryBus, RedisBus, parseEnvelope, type Bus, type BusHandler, type BusMessage } from './bus.ts';

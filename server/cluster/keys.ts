@@ -1,16 +1,25 @@
-// The Redis keys of the multi-process mode, all under one prefix (docs/scale.md lists them).
-export const PREFIX = 'baize:';
+// Every Redis key and channel of the multi-process mode, in one place (docs/scale.md lists them).
+export const KEYS = {
+  /** string counter: the next block of connection ids (INCRBY). */
+  connIds: 'baize:conn-ids',
+  /** string, PX: the process that owns a room. */
+  lease: (roomId: string) => `baize:lease:${roomId}`,
+  /** hash of token-bucket state, PX: a player's chat allowance. */
+  chat: (player: string) => `baize:chat:${player}`,
+  /** channel: commands for one process. */
+  proc: (processId: string) => `baize:proc:${processId}`,
+  /** channel: deliveries for every process. */
+  deliver: 'baize:deliver',
+} as const;
 
-/** A room's owner: the id of the process holding its lease (a string with a TTL). */
-export const roomOwnerKey = (roomId: string): string => `${PREFIX}room:${roomId}:owner`;
+/** A clear error for an empty or non-string id. */
+export function requireId(what: string, value: unknown): string {
+  if (typeof value !== 'string' || value.length === 0 || value.length > 200) throw new Error(`${what} must be a non-empty string (got ${JSON.stringify(value)})`);
+  return value;
+}
 
-/** The counter connection ids are taken from, in blocks. */
-export const CONN_ID_KEY = `${PREFIX}conn-ids`;
-
-/** Ids are 1 to 32 characters of letters, digits, '_' and '-' (room ids, process ids). */
-export function checkId(what: string, id: unknown): string {
-  if (typeof id !== 'string' || !/^[A-Za-z0-9_-]{1,32}$/.test(id)) {
-    throw new RangeError(`${what} must be 1 to 32 letters, digits, '_' or '-', got ${JSON.stringify(id)}`);
-  }
-  return id;
+/** A clear error for a duration that is not a positive finite number of milliseconds. */
+export function requireMs(what: string, value: unknown): number {
+  if (typeof value !== 'number' || !Number.isFinite(value) || value <= 0) throw new Error(`${what} must be a positive number of milliseconds (got ${String(value)})`);
+  return Math.ceil(value);
 }

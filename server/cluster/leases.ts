@@ -1,117 +1,90 @@
-// Room leases: a room has one owner process at a time. A lease lasts ttlMs unless renewed; a
-// process that dies stops renewing and another takes the room over once it expires. Renewing and
-// releasing compare the owner first, atomically (a Lua script in Redis), so a process whose lease
-// expired and was taken can never extend or drop the new owner's.
-import type { RedisClientType } from '@redis/client';
-import { checkId, roomOwnerKey } from './keys.ts';
+// Room leases: one owner process per room. Acquired with SET NX PX; renewed and released only by
+// the owner, atomically (Lua), so that a process whose lease expired cannot undo its successor's.
+import { KEYS, requireId, requireMs } from './keys.ts';
+import { command, type RedisClient } from './redis.ts';
 
 export interface RoomLeases {
-  /** Takes the room for `process` for ttlMs if nobody holds it (or `process` already does); true when it holds it now. */
-  acquire(roomId: string, process: string, ttlMs: number): Promise<boolean>;
-  /** Extends the lease by ttlMs from now, only while `process` holds it; false when it no longer does. */
-  renew(roomId: string, process: string, ttlMs: number): Promise<boolean>;
-  /** Gives the room up, only if `process` holds it; false otherwise. */
-  release(roomId: string, process: string): Promise<boolean>;
-  /** The process holding the room, if any. */
-  owner(roomId: string): Promise<string | undefined>;
+  /** True when `processId` now owns the room (also when it already did: the expiry is renewed). */
+  acquire(roomId: string, processId: string, ttlMs: number): Promise<boolean>;
+  /** True when still the owner, with the expiry pushed back. */
+  renew(roomId: string, processId: string, ttlMs: number): Promise<boolean>;
+  /** True when the owner gave the room up; false (and nothing changed) for anyone else. */
+  release(roomId: string, processId: string): Promise<boolean>;
+  owner(roomId: string): Promise<string | null>;
 }
 
-function checkTtl(ttlMs: unknown): number {
-  if (typeof ttlMs !== 'number' || !Number.isInteger(ttlMs) || ttlMs < 1 || ttlMs > 3_600_000) {
-    throw new RangeError(`ttlMs must be a whole number of milliseconds from 1 to 3600000, got ${String(ttlMs)}`);
+const RENEW = "if redis.call('GET', KEYS[1]) == ARGV[1] then return redis.call('PEXPIRE', KEYS[1], ARGV[2]) else return 0 end";
+const RELEASE = "if redis.call('GET', KEYS[1]) == ARGV[1] then return redis.call('DEL', KEYS[1]) else return 0 end";
+
+export class RedisRoomLeases implements RoomLeases {
+  constructor(private readonly client: RedisClient) {}
+
+  async acquire(roomId: string, processId: string, ttlMs: number): Promise<boolean> {
+    const key = KEYS.lease(requireId('roomId', roomId));
+    const ms = requireMs('ttlMs', ttlMs);
+    requireId('processId', processId);
+    if ((await command(this.client, ['SET', key, processId, 'NX', 'PX', String(ms)])) === 'OK') return true;
+    return this.renew(roomId, processId, ms);
   }
-  return ttlMs;
+
+  async renew(roomId: string, processId: string, ttlMs: number): Promise<boolean> {
+    const key = KEYS.lease(requireId('roomId', roomId));
+    const ms = requireMs('ttlMs', ttlMs);
+    return Number(await command(this.client, ['EVAL', RENEW, '1', key, requireId('processId', processId), String(ms)])) === 1;
+  }
+
+  async release(roomId: string, processId: string): Promise<boolean> {
+    const key = KEYS.lease(requireId('roomId', roomId));
+    return Number(await command(this.client, ['EVAL', RELEASE, '1', key, requireId('processId', processId)])) === 1;
+  }
+
+  async owner(roomId: string): Promise<string | null> {
+    const v = await command(this.client, ['GET', KEYS.lease(requireId('roomId', roomId))]);
+    return typeof v === 'string' ? v : v == null ? null : String(v);
+  }
 }
 
-/** One process's leases (the embedded mode, and the contract's reference). */
-export class MemoryLeases implements RoomLeases {
-  private readonly held = new Map<string, { process: string; until: number }>();
-
+/** One process: the same rules over a map, with the clock injectable for tests. */
+export class MemoryRoomLeases implements RoomLeases {
+  private readonly leases = new Map<string, { owner: string; until: number }>();
   constructor(private readonly now: () => number = Date.now) {}
 
-  private current(roomId: string): { process: string; until: number } | undefined {
-    const l = this.held.get(roomId);
+  private live(roomId: string): { owner: string; until: number } | undefined {
+    const l = this.leases.get(requireId('roomId', roomId));
     if (l && l.until <= this.now()) {
-      this.held.delete(roomId);
+      this.leases.delete(roomId);
       return undefined;
     }
     return l;
   }
 
-  async acquire(roomId: string, process: string, ttlMs: number): Promise<boolean> {
-    checkId('roomId', roomId);
-    checkId('process', process);
-    checkTtl(ttlMs);
-    const l = this.current(roomId);
-    if (l && l.process !== process) return false;
-    this.held.set(roomId, { process, until: this.now() + ttlMs });
+  async acquire(roomId: string, processId: string, ttlMs: number): Promise<boolean> {
+    const ms = requireMs('ttlMs', ttlMs);
+    requireId('processId', processId);
+    const l = this.live(roomId);
+    if (l && l.owner !== processId) return false;
+    this.leases.set(roomId, { owner: processId, until: this.now() + ms });
     return true;
   }
 
-  async renew(roomId: string, process: string, ttlMs: number): Promise<boolean> {
-    checkId('roomId', roomId);
-    checkId('process', process);
-    checkTtl(ttlMs);
-    const l = this.current(roomId);
-    if (!l || l.process !== process) return false;
-    l.until = this.now() + ttlMs;
+  async renew(roomId: string, processId: string, ttlMs: number): Promise<boolean> {
+    const ms = requireMs('ttlMs', ttlMs);
+    requireId('processId', processId);
+    const l = this.live(roomId);
+    if (!l || l.owner !== processId) return false;
+    l.until = this.now() + ms;
     return true;
   }
 
-  async release(roomId: string, process: string): Promise<boolean> {
-    checkId('roomId', roomId);
-    checkId('process', process);
-    const l = this.current(roomId);
-    if (!l || l.process !== process) return false;
-    this.held.delete(roomId);
+  async release(roomId: string, processId: string): Promise<boolean> {
+    requireId('processId', processId);
+    const l = this.live(roomId);
+    if (!l || l.owner !== processId) return false;
+    this.leases.delete(roomId);
     return true;
   }
 
-  async owner(roomId: string): Promise<string | undefined> {
-    checkId('roomId', roomId);
-    return this.current(roomId)?.process;
-  }
-}
-
-// KEYS[1] the owner key, ARGV[1] the process, ARGV[2] the TTL (ms).
-const ACQUIRE = `local v = redis.call('GET', KEYS[1])
-if v == false or v == ARGV[1] then redis.call('SET', KEYS[1], ARGV[1], 'PX', ARGV[2]) return 1 end
-return 0`;
-const RENEW = `if redis.call('GET', KEYS[1]) == ARGV[1] then redis.call('PEXPIRE', KEYS[1], ARGV[2]) return 1 end
-return 0`;
-const RELEASE = `if redis.call('GET', KEYS[1]) == ARGV[1] then redis.call('DEL', KEYS[1]) return 1 end
-return 0`;
-
-/** Leases shared by every process, in Redis: the key's value is the owner, its TTL the lease. */
-export class RedisLeases implements RoomLeases {
-  constructor(private readonly redis: RedisClientType) {}
-
-  private async run(script: string, roomId: string, args: string[]): Promise<boolean> {
-    const reply = await this.redis.eval(script, { keys: [roomOwnerKey(roomId)], arguments: args });
-    return reply === 1;
-  }
-
-  async acquire(roomId: string, process: string, ttlMs: number): Promise<boolean> {
-    checkId('roomId', roomId);
-    checkId('process', process);
-    return this.run(ACQUIRE, roomId, [process, String(checkTtl(ttlMs))]);
-  }
-
-  async renew(roomId: string, process: string, ttlMs: number): Promise<boolean> {
-    checkId('roomId', roomId);
-    checkId('process', process);
-    return this.run(RENEW, roomId, [process, String(checkTtl(ttlMs))]);
-  }
-
-  async release(roomId: string, process: string): Promise<boolean> {
-    checkId('roomId', roomId);
-    checkId('process', process);
-    return this.run(RELEASE, roomId, [process]);
-  }
-
-  async owner(roomId: string): Promise<string | undefined> {
-    checkId('roomId', roomId);
-    const v = await this.redis.get(roomOwnerKey(roomId));
-    return v === null ? undefined : String(v);
+  async owner(roomId: string): Promise<string | null> {
+    return this.live(roomId)?.owner ?? null;
   }
 }

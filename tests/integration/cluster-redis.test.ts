@@ -1,67 +1,112 @@
-// The multi-process mode's Redis parts on a real redis-server started here: the lease contract
-// across two clients (two processes), connection ids unique across them, and a Redis that dies.
+// The cluster pieces over a real redis-server (tests/support/redis.ts): two clients stand for two
+// processes. Skips with a message without redis-server, unless BAIZE_REQUIRE_REDIS=1.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { createClient, type RedisClientType } from '@redis/client';
-import fc from 'fast-check';
-import { RedisConnIds, RedisLeases } from '../../server/cluster/index.ts';
-import { leaseContract } from '../contract/leases.contract.ts';
+import { CHAT_PER_PLAYER, CHAT_WINDOW_S } from '../../shared/protocol/index.ts';
+import { connectRedis, RedisBus, RedisChatLimit, RedisConnIds, RedisRoomLeases, KEYS, type RedisClient } from '../../server/cluster/index.ts';
+import { chatLimitContract, connIdsContract, leaseContract } from '../contract/cluster.contract.ts';
 import { redisAvailable, startRedis, type RedisServer } from '../support/redis.ts';
 
-const run = redisAvailable();
+const until = async (check: () => boolean, ms = 3000) => {
+  const end = Date.now() + ms;
+  while (!check()) {
+    if (Date.now() > end) throw new Error('timed out waiting');
+    await new Promise((r) => setTimeout(r, 10));
+  }
+};
 
-describe.skipIf(!run)('cluster parts on Redis', () => {
+describe.runIf(redisAvailable())('cluster pieces over Redis', () => {
   let server: RedisServer;
-  const clients: RedisClientType[] = [];
-
-  const client = async (url = server.url): Promise<RedisClientType> => {
-    const c = createClient({ url, socket: { reconnectStrategy: false } }) as RedisClientType;
-    c.on('error', () => undefined);
-    await c.connect();
-    clients.push(c);
-    return c;
-  };
+  let c1: RedisClient;
+  let c2: RedisClient;
+  const closers: (() => Promise<unknown> | unknown)[] = [];
 
   beforeAll(async () => {
     server = await startRedis();
+    c1 = await connectRedis(server.url, 'p1');
+    c2 = await connectRedis(server.url, 'p2');
   }, 20_000);
-
   afterAll(async () => {
-    for (const c of clients) if (c.isOpen) await c.quit().catch(() => undefined);
+    for (const close of closers) await close();
+    c1?.destroy();
+    c2?.destroy();
     await server?.stop();
   });
 
-  describe('RedisLeases', () => {
+  describe('RedisRoomLeases', () => {
     leaseContract(async () => {
-      const [x, y] = await Promise.all([client(), client()]);
-      await x.flushAll();
-      return { a: new RedisLeases(x), b: new RedisLeases(y) };
+      await c1.sendCommand(['FLUSHALL']); // each test from an empty server
+      return { a: new RedisRoomLeases(c1), b: new RedisRoomLeases(c2) };
+    }, (ms) => new Promise((r) => setTimeout(r, ms)));
+  });
+
+  describe('RedisConnIds', () => {
+    connIdsContract(async () => ({ a: new RedisConnIds(c1, 7), b: new RedisConnIds(c2, 7) }));
+  });
+
+  describe('RedisChatLimit', () => {
+    let n = 0;
+    chatLimitContract(async () => {
+      // A fresh key space each time, so that the property's runs do not share buckets.
+      if (n++ === 0) await c1.sendCommand(['FLUSHALL']);
+      return { a: new RedisChatLimit(c1), b: new RedisChatLimit(c2) };
+    }, CHAT_PER_PLAYER, CHAT_WINDOW_S * 1000);
+  });
+
+  describe('RedisBus', () => {
+    it('a command reaches its process only; a delivery reaches every process', async () => {
+      const b1 = await RedisBus.open(server.url, c1, 'p1');
+      const b2 = await RedisBus.open(server.url, c2, 'p2');
+      closers.push(() => b1.close(), () => b2.close());
+      const got: string[] = [];
+      b1.onCommand((m) => got.push(`p1 cmd ${m.from} ${JSON.stringify(m.body)}`));
+      b2.onCommand((m) => got.push(`p2 cmd ${m.from} ${JSON.stringify(m.body)}`));
+      b1.onDelivery((m) => got.push(`p1 del ${m.from} ${JSON.stringify(m.body)}`));
+      b2.onDelivery((m) => got.push(`p2 del ${m.from} ${JSON.stringify(m.body)}`));
+      expect(await b1.command('p2', { move: 1 })).toBe(1);
+      expect(await b1.command('gone', { move: 2 })).toBe(0);
+      await b2.deliver({ shot: 3 });
+      await until(() => got.length === 3);
+      expect(got.sort()).toEqual(['p1 del p2 {"shot":3}', 'p2 cmd p1 {"move":1}', 'p2 del p2 {"shot":3}']);
+    });
+
+    it('malformed messages are dropped, and the bus goes on', async () => {
+      const b = await RedisBus.open(server.url, c1, 'p3');
+      closers.push(() => b.close());
+      const got: unknown[] = [];
+      b.onCommand((m) => got.push(m.body));
+      b.onCommand(() => {
+        throw new Error('a failing handler does not stop the others');
+      });
+      for (const raw of ['not json', '{"body":1}', '{"from":5,"body":1}', 'null']) await c2.sendCommand(['PUBLISH', KEYS.proc('p3'), raw]);
+      await c2.sendCommand(['PUBLISH', KEYS.proc('p3'), JSON.stringify({ from: 'p2', body: 'ok' })]);
+      await until(() => got.length === 1);
+      await new Promise((r) => setTimeout(r, 50));
+      expect(got).toEqual(['ok']);
     });
   });
 
-  it('hands out connection ids unique across processes, however the calls interleave', async () => {
-    const [x, y] = await Promise.all([client(), client()]);
-    await fc.assert(
-      fc.asyncProperty(fc.integer({ min: 1, max: 7 }), fc.integer({ min: 1, max: 7 }), fc.integer({ min: 1, max: 60 }), async (ba, bb, n) => {
-        const a = new RedisConnIds(x, ba);
-        const b = new RedisConnIds(y, bb);
-        const ids = await Promise.all(Array.from({ length: n }, (_, i) => (i % 3 === 0 ? b : a).next()));
-        expect(new Set(ids).size).toBe(ids.length);
-        for (const id of ids) expect(Number.isSafeInteger(id) && id > 0).toBe(true);
-      }),
-      { numRuns: 50 },
-    );
-    expect(() => new RedisConnIds(x, 0)).toThrow(/block must be/);
-  });
-
-  it('gives clear errors, not a crash, when Redis dies', async () => {
-    const own = await startRedis();
-    const c = await client(own.url);
-    const leases = new RedisLeases(c);
-    expect(await leases.acquire('r9', 'p1', 5000)).toBe(true);
-    own.kill();
-    await new Promise((r) => setTimeout(r, 100));
-    await expect(leases.owner('r9')).rejects.toThrow();
-    await expect(new RedisConnIds(c, 10).next()).rejects.toThrow();
-    await own.stop();
+  describe('a lost redis-server', () => {
+    it('gives clear errors while down, no crash, and works again after a restart', async () => {
+      const c = await connectRedis(server.url, 'lost');
+      const leases = new RedisRoomLeases(c);
+      expect(await leases.acquire('lost-room', 'p1', 60_000)).toBe(true);
+      await server.kill();
+      await expect(leases.owner('lost-room')).rejects.toThrow();
+      await server.start();
+      let owner: string | null | undefined;
+      const end = Date.now() + 10_000;
+      for (;;) {
+        try {
+          owner = await leases.owner('lost-room');
+          break;
+        } catch (err) {
+          if (Date.now() > end) throw err;
+          await new Promise((r) => setTimeout(r, 100));
+        }
+      }
+      expect(owner).toBe(null); // a fresh server without persistence: the lease is gone
+      expect(await leases.acquire('lost-room', 'p2', 60_000)).toBe(true);
+      c.destroy();
+    }, 20_000);
   });
 });
