@@ -4,7 +4,10 @@ import { GAME_KINDS, type GameKindName } from '../shared/protocol/index.ts';
 import type { BotMode } from './strategy.ts';
 
 export interface BotsArgs {
+  /** The first server's URL (the yardstick's). */
   readonly url: string;
+  /** Every server's URL (--url a,b,...): room i's maker on urls[i mod n], its opponent on the next. */
+  readonly urls: readonly string[];
   readonly rooms: number;
   readonly seconds: number;
   /** One kind for every room, or "mixed": the kinds in turn. */
@@ -19,7 +22,7 @@ export interface BotsArgs {
 }
 
 export const USAGE =
-  'usage: npm run bots -- --url ws://127.0.0.1:PORT/ws [--rooms N] [--seconds S] ' +
+  'usage: npm run bots -- --url ws://127.0.0.1:PORT/ws[,ws://...] [--rooms N] [--seconds S] ' +
   '[--kind nineball|eightball|snooker|threecushion|mixed] [--think-ms M] [--quick] [--race-to R] [--batch B]';
 
 function count(text: string | undefined, fallback: number, name: string, min: number): number {
@@ -43,11 +46,13 @@ export function parseBotsArgs(argv: readonly string[]): BotsArgs {
       batch: { type: 'string' },
     },
   });
-  if (values.url === undefined || !/^wss?:\/\//.test(values.url)) throw new Error('--url ws://host:port/ws is required');
+  const urls = values.url?.split(',').map((u) => u.trim()) ?? [];
+  if (urls.length === 0 || urls.some((u) => !/^wss?:\/\//.test(u))) throw new Error('--url ws://host:port/ws is required (several, comma-separated, for several processes)');
   const kind = values.kind ?? 'nineball';
   if (kind !== 'mixed' && !(GAME_KINDS as readonly string[]).includes(kind)) throw new Error(`unknown --kind "${kind}"`);
   return {
-    url: values.url,
+    url: urls[0]!,
+    urls,
     rooms: Math.floor(count(values.rooms, 1, 'rooms', 1)),
     seconds: count(values.seconds, 30, 'seconds', 0.1),
     kind: kind as GameKindName | 'mixed',

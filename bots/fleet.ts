@@ -5,7 +5,8 @@ import { ProtocolClient } from './client.ts';
 import type { BotMode } from './strategy.ts';
 
 export interface FleetOptions {
-  readonly url: string;
+  /** Servers of one platform: each room's two bots on two of them in turn (the same one when only one). */
+  readonly urls: readonly string[];
   readonly mode: BotMode;
   readonly thinkMs: number;
   readonly raceTo: number | undefined;
@@ -30,10 +31,11 @@ export class Fleet {
     const k = kind === 'mixed' ? KINDS[i % KINDS.length]! : kind;
     const opened: Bot[] = [];
     try {
-      const first = await this.bot(`bot-${this.tag}-${i}a`, true);
+      const urls = this.options.urls;
+      const first = await this.bot(urls[i % urls.length]!, `bot-${this.tag}-${i}a`, true);
       opened.push(first);
       const room = await first.create(k, this.options.raceTo);
-      const second = await this.bot(`bot-${this.tag}-${i}b`, false);
+      const second = await this.bot(urls[(i + 1) % urls.length]!, `bot-${this.tag}-${i}b`, false);
       opened.push(second);
       await second.join(room);
       this.rooms++;
@@ -45,8 +47,8 @@ export class Fleet {
     }
   }
 
-  private async bot(name: string, countGames: boolean): Promise<Bot> {
-    const client = await ProtocolClient.connect(this.options.url);
+  private async bot(url: string, name: string, countGames: boolean): Promise<Bot> {
+    const client = await ProtocolClient.connect(url);
     this.sockets++;
     const bot = new Bot(client, { name, mode: this.options.mode, thinkMs: this.options.thinkMs, rematch: true, stats: this.stats, countGames });
     this.bots.push(bot);

@@ -39,7 +39,7 @@ const LEAVE_GRACE_MS = 3000;
 
 async function run(args: BotsArgs): Promise<number> {
   const started = performance.now();
-  const fleet = new Fleet({ url: args.url, mode: args.mode, thinkMs: args.thinkMs, raceTo: args.raceTo });
+  const fleet = new Fleet({ urls: args.urls, mode: args.mode, thinkMs: args.thinkMs, raceTo: args.raceTo });
   let timer: NodeJS.Timeout | undefined;
   const playEnds = new Promise<void>((r) => (timer = setTimeout(r, args.seconds * 1000)));
   let over = false;

@@ -15,6 +15,7 @@ import { AddressCap } from './ws/address.ts';
 import { bindWebSocket } from './ws/binding.ts';
 import { WorkerPool } from './workers/pool.ts';
 import { eventLoopStats } from './event-loop-stats.ts';
+import { ClusterNode } from './cluster/index.ts';
 
 export interface RunningServer {
   /** http://host:port with the port actually bound (PORT=0 picks a free one). */
@@ -46,8 +47,11 @@ export async function startServer(config: Config): Promise<RunningServer> {
   let service: GameService;
   let workers: WorkerPool | undefined;
   let schema: number;
+  // With BAIZE_REDIS_URL this process is one of several (docs/scale.md).
+  let cluster: ClusterNode | undefined;
   try {
     schema = await store.schemaVersion();
+    if (config.redisUrl !== undefined) cluster = await ClusterNode.start(config.redisUrl, config.processId === undefined ? {} : { processId: config.processId });
     workers = new WorkerPool({ size: config.computerWorkers, budgetMs: config.computerThinkMs });
     service = await GameService.start(store, {
       seatHoldMs: config.seatHoldMs,
@@ -56,9 +60,11 @@ export async function startServer(config: Config): Promise<RunningServer> {
       ratedMinPlayMs: config.ratedMinPlayMs,
       maxTabsPerPlayer: config.maxTabsPerPlayer,
       computer: { thinker: workers, pauseMs: config.computerPauseMs },
+      ...(cluster ? { peers: cluster } : {}),
     });
   } catch (err) {
     void workers?.close();
+    await cluster?.close();
     await store.close();
     throw err;
   }
@@ -89,6 +95,7 @@ export async function startServer(config: Config): Promise<RunningServer> {
   } catch (err) {
     void workers.close();
     loop?.stop();
+    await cluster?.close();
     await store.close();
     throw err;
   }
@@ -102,6 +109,7 @@ export async function startServer(config: Config): Promise<RunningServer> {
     helloMs: config.helloMs,
     perAddress,
     maxBufferedBytes: config.maxBufferedBytes,
+    ...(cluster ? { nextConnId: () => cluster.nextConnId() } : {}),
   });
 
   const { port } = http.address() as AddressInfo;
@@ -120,10 +128,13 @@ export async function startServer(config: Config): Promise<RunningServer> {
         for (const socket of wss.clients) socket.close(1001, 'server shutting down');
         wss.close();
         http.close(() => {
-          store.close().then(resolve, (err: unknown) => {
-            console.error(`closing the store: ${(err as Error).stack ?? String(err)}`);
-            resolve();
-          });
+          // Leases given up first, so that the other processes take the rooms over at once.
+          (cluster?.close() ?? Promise.resolve())
+            .then(() => store.close())
+            .then(resolve, (err: unknown) => {
+              console.error(`closing the store: ${(err as Error).stack ?? String(err)}`);
+              resolve();
+            });
         });
         http.closeIdleConnections();
         // Sockets that do not finish their close handshake promptly are cut.

@@ -19,6 +19,10 @@ export interface Config {
   readonly dbPath: string;
   /** PostgreSQL instead of the SQLite file (BAIZE_DATABASE_URL, postgres://...); undefined: SQLite. */
   readonly databaseUrl: string | undefined;
+  /** Several processes over Redis (BAIZE_REDIS_URL, redis://...); needs databaseUrl. Undefined: one process. */
+  readonly redisUrl: string | undefined;
+  /** This process's name in the cluster (BAIZE_PROCESS_ID); undefined: made up at start. */
+  readonly processId: string | undefined;
   readonly migrationsDir: string;
   readonly clientDir: string;
   /** How long a dropped player's seat is held (ms). */
@@ -96,11 +100,18 @@ export function readConfig(env: NodeJS.ProcessEnv = process.env): Config {
   }
   const host = env.HOST ?? '127.0.0.1';
   if (host.trim() === '') throw new RangeError('HOST must not be empty');
+  const database = databaseUrl(env);
+  const redis = redisUrl(env);
+  if (redis !== undefined && database === undefined) {
+    throw new RangeError('BAIZE_REDIS_URL needs BAIZE_DATABASE_URL: several processes share one PostgreSQL database, never a SQLite file');
+  }
   return {
     host,
     port,
     dbPath: resolve(env.BAIZE_DB ?? resolve(ROOT, 'data/baize.db')),
-    databaseUrl: databaseUrl(env),
+    databaseUrl: database,
+    redisUrl: redis,
+    processId: processId(env),
     migrationsDir: resolve(env.BAIZE_MIGRATIONS ?? resolve(ROOT, 'migrations')),
     clientDir: resolve(env.BAIZE_CLIENT_DIR ?? resolve(ROOT, 'dist/client')),
     seatHoldMs: seconds(env, 'BAIZE_SEAT_HOLD_S', 60),
@@ -135,6 +146,29 @@ function databaseUrl(env: NodeJS.ProcessEnv): string | undefined {
     throw new RangeError(`BAIZE_DATABASE_URL must start with postgres:// or postgresql://, got ${url.protocol}//`);
   }
   if (url.hostname === '') throw new RangeError('BAIZE_DATABASE_URL must name a host, as in postgres://user:password@host:5432/baize');
+  return text;
+}
+
+/** BAIZE_REDIS_URL: a redis:// (or rediss://) URL with a host; unset or empty means one process. Never echoed (a password). */
+function redisUrl(env: NodeJS.ProcessEnv): string | undefined {
+  const text = env.BAIZE_REDIS_URL?.trim();
+  if (text === undefined || text === '') return undefined;
+  let url: URL;
+  try {
+    url = new URL(text);
+  } catch {
+    throw new RangeError('BAIZE_REDIS_URL must be a URL such as redis://host:6379 (this one does not parse)');
+  }
+  if (url.protocol !== 'redis:' && url.protocol !== 'rediss:') throw new RangeError(`BAIZE_REDIS_URL must start with redis:// or rediss://, got ${url.protocol}//`);
+  if (url.hostname === '') throw new RangeError('BAIZE_REDIS_URL must name a host, as in redis://host:6379');
+  return text;
+}
+
+/** BAIZE_PROCESS_ID: letters, digits, '-', '_' and '.', at most 64. */
+function processId(env: NodeJS.ProcessEnv): string | undefined {
+  const text = env.BAIZE_PROCESS_ID?.trim();
+  if (text === undefined || text === '') return undefined;
+  if (!/^[A-Za-z0-9._-]{1,64}$/.test(text)) throw new RangeError(`BAIZE_PROCESS_ID must be 1 to 64 letters, digits, '.', '_' or '-', got "${text}"`);
   return text;
 }
 

@@ -22,6 +22,23 @@ export class RedisConnIds implements ConnIds {
     if (!Number.isInteger(block) || block < 1) throw new Error(`block must be a positive integer (got ${block})`);
   }
 
+  /** Fetches the first block, so that `take` has ids to give. */
+  async ready(): Promise<void> {
+    while (this.nextId >= this.end) {
+      this.pending ??= this.refill().finally(() => (this.pending = null));
+      await this.pending;
+    }
+  }
+
+  /**
+   * An id at once (a socket's id is needed as it opens), refilling in the background once half a
+   * block is used (the rest of that block is skipped); undefined only when a whole block went before one round trip came back.
+   */
+  take(): number | undefined {
+    if (this.end - this.nextId <= this.block / 2) this.pending ??= this.refill().catch(() => undefined).finally(() => (this.pending = null));
+    return this.nextId < this.end ? this.nextId++ : undefined;
+  }
+
   async next(): Promise<number> {
     while (this.nextId >= this.end) {
       this.pending ??= this.refill().finally(() => (this.pending = null));

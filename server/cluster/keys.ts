@@ -10,6 +10,10 @@ export const KEYS = {
   proc: (processId: string) => `baize:proc:${processId}`,
   /** channel: deliveries for every process. */
   deliver: 'baize:deliver',
+  /** sorted set: each live process scored by its last heartbeat (ms since the epoch). */
+  procs: 'baize:procs',
+  /** hash conn id -> player JSON: the welcomed sockets a process holds. */
+  presence: (processId: string) => `baize:presence:${processId}`,
 } as const;
 
 /** A clear error for an empty or non-string id. */

@@ -3,21 +3,29 @@
 import { CHAT_PER_PLAYER, CHAT_PER_ROOM, CHAT_WINDOW_S } from '../../shared/protocol/index.ts';
 import { TokenBucket } from '../token-bucket.ts';
 import { ServiceError } from './errors.ts';
+import type { ChatLimit } from '../cluster/index.ts';
 
 export class ChatLimits {
   private readonly players = new Map<string, TokenBucket>();
   private readonly rooms = new Map<string, TokenBucket>();
 
-  /** Counts a line from `player` in `room`, or refuses it with 'rate-limited' and how long to wait. */
-  take(player: string, room: string, now: number): void {
-    const mine = bucket(this.players, player, CHAT_PER_PLAYER, now);
+  /**
+   * Counts a line from `player` in `room`, or refuses it with 'rate-limited' and how long to wait.
+   * With several processes the player's allowance is `shared` (one bucket in Redis); the room's
+   * stays here, as a room's lines all pass its owner, one at a time.
+   */
+  async take(player: string, room: string, now: number, shared?: ChatLimit): Promise<void> {
     const theirs = bucket(this.rooms, room, CHAT_PER_ROOM, now);
-    const wait = Math.max(mine.waitMs(now), theirs.waitMs(now));
+    const mine = shared ? undefined : bucket(this.players, player, CHAT_PER_PLAYER, now);
+    const roomWait = theirs.waitMs(now);
+    // The shared bucket counts the line as it answers, so it is asked only when the room has room.
+    const myWait = mine ? mine.waitMs(now) : roomWait > 0 ? 0 : await shared!.take(player, now);
+    const wait = Math.max(myWait, roomWait);
     if (wait > 0) {
-      const who = mine.waitMs(now) > 0 ? 'you are sending messages too fast' : 'this room is receiving messages too fast';
+      const who = myWait > 0 ? 'you are sending messages too fast' : 'this room is receiving messages too fast';
       throw new ServiceError('rate-limited', `${who}; wait ${Math.ceil(wait / 1000)} s`);
     }
-    mine.take(now);
+    mine?.take(now);
     theirs.take(now);
   }
 

@@ -1,5 +1,6 @@
 // The lobby and presence: which rooms exist, who is connected on which sockets, who watches the
-// lobby. Everything a second server process would have to share lives behind this one module.
+// lobby. With several processes it is a mirror: the sockets of other processes are here too,
+// each with its process, kept current by their events (docs/scale.md).
 import type { LobbyRoom, PlayerRef } from '../../shared/protocol/index.ts';
 import type { Room } from './room.ts';
 
@@ -13,6 +14,8 @@ export class Lobby {
   private readonly sockets = new Map<string, Set<ConnId>>();
   /** When each player's last socket dropped (ms since the epoch); absent while connected. */
   private readonly droppedAt = new Map<string, number>();
+  /** The process of each socket held by another process. */
+  private readonly procs = new Map<ConnId, string>();
   /** Sockets that asked for the lobby list. */
   readonly subscribers = new Set<ConnId>();
 
@@ -22,9 +25,10 @@ export class Lobby {
     return this.players.get(conn);
   }
 
-  /** Binds a socket to a player; true when the player was not connected before. */
-  attach(conn: ConnId, player: PlayerRef): boolean {
+  /** Binds a socket (another process's when `proc` is given) to a player; true when the player was not connected before. */
+  attach(conn: ConnId, player: PlayerRef, proc?: string): boolean {
     this.players.set(conn, player);
+    if (proc !== undefined) this.procs.set(conn, proc);
     let set = this.sockets.get(player.id);
     const first = set === undefined;
     if (!set) this.sockets.set(player.id, (set = new Set()));
@@ -36,6 +40,7 @@ export class Lobby {
   /** Forgets a socket; returns its player when that was the player's last socket. */
   detach(conn: ConnId, now: number): PlayerRef | undefined {
     this.subscribers.delete(conn);
+    this.procs.delete(conn);
     const player = this.players.get(conn);
     if (!player) return undefined;
     this.players.delete(conn);
@@ -45,6 +50,18 @@ export class Lobby {
     this.sockets.delete(player.id);
     this.droppedAt.set(player.id, now);
     return player;
+  }
+
+  /** The process holding another process's socket; undefined for this process's own or unknown ones. */
+  procOf(conn: ConnId): string | undefined {
+    return this.procs.get(conn);
+  }
+
+  /** The sockets held by one other process. */
+  connsOf(proc: string): ConnId[] {
+    const out: ConnId[] = [];
+    for (const [conn, p] of this.procs) if (p === proc) out.push(conn);
+    return out;
   }
 
   connected(playerId: string): boolean {

@@ -59,6 +59,8 @@ export class Room {
   outcome: { readonly rated: boolean; readonly unrated: UnratedReason | null } | null = null;
   /** A tick's timers are queued for the room: the next tick does not queue them again. */
   timersQueued = false;
+  /** Several processes: the process that owns the room (runs its commands and clocks); undefined: not known. */
+  owner: string | undefined = undefined;
 
   constructor(public state: RoomState) {}
 }

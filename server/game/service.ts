@@ -8,6 +8,11 @@
 // another's messages or loses its own when another fails. A room's commands, timers and computer
 // moves run one at a time in arrival order (a promise chain per room), so each sees the state the
 // previous one committed; different rooms proceed concurrently.
+//
+// With several processes (options.peers, docs/scale.md) each room has one owner process: a
+// command for a room owned elsewhere is forwarded there and its answer awaited; only the owner
+// commits a room and runs its clocks, and announces each committed state so that every process's
+// lobby mirrors it; deliveries for another process's sockets are sent to that process.
 import { randomBytes } from 'node:crypto';
 import type { ClientMessage, PlayerRef, ServerMessage } from '../../shared/protocol/index.ts';
 import { LOBBY_MAX_ROOMS, LOBBY_UPDATE_MS, MAX_OPEN_ROOMS_PER_PLAYER, MAX_TABS_PER_PLAYER } from '../../shared/protocol/index.ts';
@@ -27,6 +32,8 @@ import { computerName, decisionSeed, fallbackDecision, looksLikeComputer } from 
 import { PointSchema, ShotSchema, type ShotInput } from '../../shared/protocol/index.ts';
 import * as v from 'valibot';
 import type { Point } from '../../shared/rules/index.ts';
+import type { Peers } from '../cluster/index.ts';
+import { PeerMessageSchema, type PeerMessage } from './peer-messages.ts';
 
 export type { ConnId } from './lobby.ts';
 
@@ -67,6 +74,8 @@ export interface ServiceOptions {
   readonly maxTabsPerPlayer?: number;
   /** The computer opponent: where it thinks, and the least time between the balls stopping and its move (ms). */
   readonly computer?: { readonly thinker: Thinker; readonly pauseMs: number };
+  /** The other processes, when there are several (docs/scale.md); absent: this process is the platform. */
+  readonly peers?: Peers;
 }
 
 type Msg<T extends ClientMessage['type']> = Extract<ClientMessage, { type: T }>;
@@ -84,6 +93,10 @@ const PRUNE_BATCH = 500;
 const PRUNE_EVERY_MS = 3_600_000;
 /** Forgotten guest limits are swept once a minute. */
 const SWEEP_EVERY_MS = 60_000;
+/** How long a command forwarded to a room's owner waits for its answer. */
+const FORWARD_TIMEOUT_MS = 5_000;
+/** Rooms without a live owner that one tick tries to take over. */
+const ADOPT_PER_TICK = 200;
 
 function randomSeed(): number {
   return randomBytes(4).readUInt32LE(0);
@@ -122,6 +135,12 @@ export class GameService {
   private readonly greeting = new Map<ConnId, boolean>();
   /** The pruner's pass in progress, if any. */
   private pruning: Promise<void> | undefined;
+  private readonly peers: Peers | undefined;
+  /** Commands forwarded to another process, by ref, awaiting their answer. */
+  private readonly forwarded = new Map<number, (deliveries: Delivery[]) => void>();
+  private nextRef = 1;
+  /** Rooms changed here since the last announcement to the other processes. */
+  private readonly dirty = new Set<Room>();
 
   /** The service with every room not closed brought back from the store. */
   static async start(store: AsyncStore, options: ServiceOptions): Promise<GameService> {
@@ -131,7 +150,10 @@ export class GameService {
       const result = state.status === 'over' && state.matchId !== null ? await store.matchResult(state.matchId) : undefined;
       restored.push({ state, result });
     }
-    return new GameService(store, options, restored);
+    const service = new GameService(store, options, restored);
+    // The other processes' sockets; their rooms' owners are learnt from their announcements.
+    if (options.peers) for (const e of await options.peers.presence()) service.lobby.attach(e.conn, e.player, e.proc);
+    return service;
   }
 
   /** Use `start`, which reads the rooms to bring back; this one starts with `restored`. */
@@ -148,6 +170,13 @@ export class GameService {
       const room = this.addRoom(new Room(state));
       room.outcome = outcomeOf(result);
       if (room.state.computer) this.computerIds.add(room.state.computer.id);
+    }
+    const peers = (this.peers = options.peers);
+    if (peers) {
+      peers.onMessage((from, body) => this.fromPeer(from, body));
+      peers.onDead((proc) => this.peerDead(proc));
+      peers.onLost((id) => this.lost(id));
+      peers.onRevived(() => this.revived());
     }
   }
 
@@ -196,14 +225,17 @@ export class GameService {
       if (msg.type === 'hello') await this.hello(out, conn, msg);
       else {
         const player = this.welcomed(conn);
-        // A command about a room waits its turn in the room's queue.
-        if ('room' in msg) await this.inRoom(msg.room, () => this.command(out, conn, player, msg));
-        else await this.command(out, conn, player, msg);
+        if ('room' in msg) {
+          const owner = await this.ownerFor(msg.room);
+          if (owner !== undefined) return await this.forward(owner, conn, player, msg);
+          // A command about a room waits its turn in the room's queue.
+          await this.inRoom(msg.room, () => this.command(out, conn, player, msg));
+        } else await this.command(out, conn, player, msg);
       }
     } catch (err) {
       this.fail(out, conn, msg.id, err);
     }
-    return out;
+    return this.route(out);
   }
 
   /** An error for a frame that never became a command (bad JSON, a schema failure). */
@@ -215,21 +247,31 @@ export class GameService {
   async close(conn: ConnId): Promise<Delivery[]> {
     const out: Outbox = [];
     if (this.greeting.has(conn)) this.greeting.set(conn, false);
+    if (this.peers && this.lobby.playerOf(conn)) {
+      this.peers.left(conn);
+      this.peers.publish({ t: 'detach', conn });
+    }
+    this.departed(out, conn);
+    this.addresses.delete(conn);
+    return this.route(out);
+  }
+
+  /** A socket gone, here or on another process: out of the rooms this process owns and of presence. */
+  private departed(out: Outbox, conn: ConnId): void {
     for (const id of this.watching.get(conn) ?? []) {
       const room = this.lobby.rooms.get(id);
-      if (room?.spectators.delete(conn)) {
+      if (room && this.owns(room) && room.spectators.delete(conn)) {
         this.roomsChanged.add(room);
+        this.touched(room);
         this.lobbyChanged = true;
       }
     }
     this.watching.delete(conn);
-    this.addresses.delete(conn);
     const gone = this.lobby.detach(conn, this.now());
     if (gone) {
-      for (const room of this.roomsOf(gone.id)) this.broadcastRoom(out, room);
+      for (const room of this.roomsOf(gone.id)) if (this.owns(room)) this.broadcastRoom(out, room);
       this.lobbyChanged = true;
     }
-    return out;
   }
 
   /**
@@ -241,8 +283,9 @@ export class GameService {
     const out: Outbox = [];
     const now = this.now();
     const pass = this.housekeeping(now);
-    const due: Promise<void>[] = [];
+    const due: Promise<void>[] = [this.adoptOrphans()];
     for (const room of this.lobby.rooms.values()) {
+      if (!this.owns(room)) continue;
       if (room.state.status === 'playing') this.computerTurn(room);
       if (room.timersQueued || !this.timersDue(room, now)) continue;
       room.timersQueued = true;
@@ -275,13 +318,14 @@ export class GameService {
       this.chatLimits.prune(at);
       this.chatPrunedAt = at;
     }
-    return out;
+    return this.route(out);
   }
 
   /** Deliveries made outside a command (timers, the computer's moves), out through the binding's outlet. */
   private emit(deliveries: Outbox): void {
     try {
-      this.outlet?.(deliveries);
+      const here = this.route(deliveries);
+      if (here.length > 0) this.outlet?.(here);
     } catch (err) {
       this.log(`delivering: ${(err as Error).stack ?? String(err)}`);
     }
@@ -406,7 +450,7 @@ export class GameService {
       case 'chat': {
         const room = this.room(msg.room);
         if (!this.seated(room, player.id) && !room.spectators.has(conn)) throw new ServiceError('not-seated', 'only the players and spectators of a room may chat there');
-        this.chatLimits.take(player.id, room.state.id, this.now());
+        await this.chatLimits.take(player.id, room.state.id, this.now(), this.peers?.chat);
         this.send(out, this.members(room), { type: 'chat', room: room.state.id, from: player, text: msg.text, at: this.now() });
         return;
       }
@@ -442,8 +486,21 @@ export class GameService {
     }
     const back = this.lobby.attach(conn, player);
     if (back) this.lobbyChanged = true;
+    if (this.peers) {
+      this.peers.joined(conn, player);
+      this.peers.publish({ t: 'attach', conn, player });
+    }
     this.send(out, [conn], { type: 'welcome', ...re(msg.id), player, token });
+    await this.arrived(out, conn, player, back);
+  }
+
+  /**
+   * A player's socket welcomed (here, or on another process): in each of their rooms this process
+   * owns, a stopped clock starts again, and the room goes to them (to everyone, when they are back).
+   */
+  private async arrived(out: Outbox, conn: ConnId, player: PlayerRef, back: boolean): Promise<void> {
     for (const room of this.roomsOf(player.id)) {
+      if (!this.owns(room)) continue;
       room.holdsOver.delete(player.id);
       await this.inRoom(room.state.id, async () => {
         const s = room.state;
@@ -504,7 +561,19 @@ export class GameService {
     await this.store.renamePlayer(Number(player.id), name);
     const renamed = { id: player.id, name };
     this.lobby.rename(renamed);
+    this.peers?.publish({ t: 'rename', player: renamed });
+    await this.renamedInRooms(out, renamed);
+    const others = this.lobby.socketsOf(player.id).filter((c) => c !== conn);
+    this.send(out, others, { type: 'player', player: renamed });
+    this.send(out, [conn], { type: 'player', ...re(msg.id), player: renamed });
+    this.lobbyChanged = true;
+  }
+
+  /** A player's new name in the seats of the rooms this process owns. */
+  private async renamedInRooms(out: Outbox, renamed: PlayerRef): Promise<void> {
+    const player = renamed;
     for (const room of this.roomsOf(player.id)) {
+      if (!this.owns(room)) continue;
       await this.inRoom(room.state.id, async () => {
         if (this.lobby.rooms.get(room.state.id) !== room || !this.seated(room, player.id)) return;
         try {
@@ -516,10 +585,6 @@ export class GameService {
         this.broadcastRoom(out, room);
       });
     }
-    const others = this.lobby.socketsOf(player.id).filter((c) => c !== conn);
-    this.send(out, others, { type: 'player', player: renamed });
-    this.send(out, [conn], { type: 'player', ...re(msg.id), player: renamed });
-    this.lobbyChanged = true;
   }
 
   /** A free made-up name; a few tries, as a collision in 31^8 names is all but impossible. */
@@ -568,12 +633,17 @@ export class GameService {
     };
     const computer = level === undefined ? undefined : await this.computerPlayer(level);
     const seated: RoomState = computer ? { ...state, seats: [player, computer], computer: { id: computer.id, level: level! } } : state;
+    // With several processes the maker's process owns the new room: its lease first.
+    if (this.peers && !(await this.peers.acquire(seated.id))) throw new Error(`the lease of new room ${seated.id} is held elsewhere`);
     try {
       await this.store.createRoom({ ...seated, createdBy: Number(player.id), state: JSON.stringify(seated) });
     } catch (err) {
+      this.peers?.release(seated.id);
       throw err instanceof TooManyRoomsError ? tooManyRooms() : err;
     }
     const room = this.addRoom(new Room(seated));
+    room.owner = this.peers?.self;
+    this.touched(room);
     if (!state.private) this.lobbyChanged = true;
     // Against the computer the game starts at once, the person breaking.
     if (computer) await this.inRoom(seated.id, () => this.startMatch(out, room, { ...seated, order: [player.id, computer.id] }, conn, msg.id));
@@ -605,7 +675,7 @@ export class GameService {
     const s = room.state;
     const c = s.computer;
     const options = this.options.computer;
-    if (!c || !options || s.status !== 'playing' || s.game === null || s.game.winner !== null || s.game.turn !== c.id) return;
+    if (!c || !options || !this.owns(room) || s.status !== 'playing' || s.game === null || s.game.winner !== null || s.game.turn !== c.id) return;
     if (room.thinking?.stateId === s.stateId) return;
     clearTimeout(room.thinking?.timer);
     const stateId = s.stateId;
@@ -632,7 +702,7 @@ export class GameService {
   /** Plays the computer's decision if the room is still where it was; a refused one gives way to a fallback. */
   private async computerPlays(room: Room, thinking: NonNullable<Room['thinking']>, decision: Decision): Promise<void> {
     const s = room.state;
-    if (room.thinking !== thinking || this.lobby.rooms.get(s.id) !== room) return;
+    if (room.thinking !== thinking || this.lobby.rooms.get(s.id) !== room || !this.owns(room)) return;
     if (s.status !== 'playing' || s.game === null || s.stateId !== thinking.stateId || s.game.turn !== s.computer?.id) return;
     const me = s.seats.find((p) => p.id === s.computer!.id)!;
     const game = s.game;
@@ -712,6 +782,7 @@ export class GameService {
     room.state = next;
     room.thinking = null;
     room.outcome = null;
+    this.touched(room);
     this.broadcastRoom(out, room, conn, id);
     this.lobbyChanged = true;
     this.computerTurn(room);
@@ -732,6 +803,7 @@ export class GameService {
     // The new spectator gets the room at once; the others see the count at the next tick.
     this.send(out, [conn], { type: 'room', ...re(msg.id), room: this.view(room) });
     this.roomsChanged.add(room);
+    this.touched(room);
     if (!room.state.private) this.lobbyChanged = true;
   }
 
@@ -741,6 +813,7 @@ export class GameService {
       this.watching.get(conn)?.delete(room.state.id);
       this.send(out, [conn], { type: 'left', ...re(msg.id), room: room.state.id });
       this.roomsChanged.add(room);
+      this.touched(room);
       this.lobbyChanged = true;
       return;
     }
@@ -786,6 +859,7 @@ export class GameService {
       throw err;
     }
     room.state = next;
+    this.touched(room);
     if (next.status === 'closed') this.forget(room);
   }
 
@@ -798,6 +872,7 @@ export class GameService {
       room.state = state;
       room.thinking = null;
       this.index(room);
+      this.touched(room);
       if (state.status === 'closed') this.forget(room);
     }
     this.lobbyChanged = true;
@@ -810,6 +885,7 @@ export class GameService {
     if (this.lobby.rooms.get(s.id) === room) this.lobby.rooms.delete(s.id);
     for (const p of s.seats) this.seatsOf.get(p.id)?.delete(s.id);
     for (const c of room.spectators) this.watching.get(c)?.delete(s.id);
+    this.peers?.release(s.id);
   }
 
   private async shot(out: Outbox, conn: ConnId, player: PlayerRef, msg: Msg<'shot'>): Promise<void> {
@@ -957,6 +1033,281 @@ export class GameService {
     };
   }
 
+  // ---- Several processes (options.peers) ----
+
+  /** Whether this process runs the room's commands and clocks: always, unless there are peers. */
+  private owns(room: Room): boolean {
+    return this.peers === undefined || room.owner === this.peers.self;
+  }
+
+  /** Announced to the other processes at the end of the operation (several processes only). */
+  private touched(room: Room): void {
+    if (this.peers) this.dirty.add(room);
+  }
+
+  /** Where a room's commands run: undefined for here, else the owning process. */
+  private async ownerFor(id: string): Promise<string | undefined> {
+    const peers = this.peers;
+    if (!peers) return undefined;
+    const room = this.lobby.rooms.get(id);
+    if (room?.owner === peers.self) return undefined;
+    if (room?.owner !== undefined && peers.alive(room.owner)) return room.owner;
+    if (await this.adopt(id)) return undefined;
+    const owner = await peers.ownerOf(id);
+    if (owner !== null && owner !== peers.self && peers.alive(owner)) return owner;
+    if (!room) throw new ServiceError('no-room', `there is no room ${id}`);
+    throw unavailable('its server has gone and another takes it over within seconds');
+  }
+
+  /**
+   * Takes a room no live process owns: its lease, then its state as last committed in the
+   * store (the truth, whatever the mirror held). False when another process holds the lease or the
+   * room is no more. Runs in the room's queue, so no operation of the room is under way.
+   */
+  private adopt(id: string): Promise<boolean> {
+    const peers = this.peers!;
+    return this.inRoom(id, async () => {
+      if (this.lobby.rooms.get(id)?.owner === peers.self) return true;
+      if (!(await peers.acquire(id))) return false;
+      try {
+        const row = await this.store.room(id);
+        const state = row ? (JSON.parse(row.state) as RoomState) : undefined;
+        let room = this.lobby.rooms.get(id);
+        if (!state || state.status === 'closed') {
+          if (room && state) room.state = state;
+          if (room) this.forget(room);
+          peers.release(id);
+          return false;
+        }
+        if (room) room.state = state;
+        else room = this.addRoom(new Room(state));
+        this.index(room);
+        room.outcome = state.status === 'over' && state.matchId !== null ? outcomeOf(await this.store.matchResult(state.matchId)) : null;
+        room.owner = peers.self;
+        room.thinking = null;
+        if (room.state.computer) this.computerIds.add(room.state.computer.id);
+        this.touched(room);
+        this.lobbyChanged = true;
+        // Everyone there gets the room as stored: a player who came back meanwhile had no owner to send it.
+        const out: Outbox = [];
+        this.broadcastRoom(out, room);
+        this.emit(out);
+        return true;
+      } catch (err) {
+        peers.release(id);
+        throw err;
+      }
+    });
+  }
+
+  /** Rooms whose owner is unknown or dead, taken over (a few a tick) so that their clocks run again. */
+  private async adoptOrphans(): Promise<void> {
+    const peers = this.peers;
+    if (!peers) return;
+    const orphans: Room[] = [];
+    for (const room of this.lobby.rooms.values()) {
+      if (room.owner !== undefined && peers.alive(room.owner)) continue;
+      orphans.push(room);
+      if (orphans.length >= ADOPT_PER_TICK) break;
+    }
+    await Promise.all(
+      orphans.map(async (room) => {
+        try {
+          if (await this.adopt(room.state.id)) return;
+          // Owned by a live process whose announcement this one has not seen: note the owner.
+          const owner = await peers.ownerOf(room.state.id);
+          if (owner !== null && room.owner === undefined) room.owner = owner;
+        } catch (err) {
+          this.log(`taking over room ${room.state.id}: ${(err as Error).message}`);
+        }
+      }),
+    );
+  }
+
+  /** A room command sent to the process that owns the room; resolves with the deliveries for this process. */
+  private forward(owner: string, conn: ConnId, player: PlayerRef, msg: Extract<ClientMessage, { room: string }>): Promise<Delivery[]> {
+    const peers = this.peers!;
+    const ref = this.nextRef++;
+    return new Promise((resolve) => {
+      const fail = (why: string) => {
+        if (!this.forwarded.delete(ref)) return;
+        clearTimeout(timer);
+        resolve([{ to: [conn], message: { type: 'error', ...re(msg.id), code: 'unavailable', message: `room ${msg.room} cannot be reached: ${why}; try again` } }]);
+      };
+      const timer = setTimeout(() => fail(`its server did not answer within ${FORWARD_TIMEOUT_MS / 1000} s`), FORWARD_TIMEOUT_MS);
+      this.forwarded.set(ref, (deliveries) => {
+        clearTimeout(timer);
+        this.forwarded.delete(ref);
+        resolve(deliveries);
+      });
+      const body: PeerMessage = { t: 'cmd', ref, conn, player, msg };
+      peers.send(owner, body).then(
+        (heard) => {
+          if (heard) return;
+          const room = this.lobby.rooms.get(msg.room);
+          if (room?.owner === owner) room.owner = undefined;
+          fail('its server has gone and another takes it over within seconds');
+        },
+        (err: unknown) => fail(`the cluster's bus failed (${(err as Error).message})`),
+      );
+    });
+  }
+
+  /** A command forwarded by another process: run here as the owner, the answer sent back with its ref. */
+  private async remoteCommand(from: string, ref: number, conn: ConnId, player: PlayerRef, msg: ClientMessage): Promise<void> {
+    const out: Outbox = [];
+    try {
+      if (!('room' in msg)) throw new ServiceError('bad-message', 'only room commands are forwarded');
+      const room = this.lobby.rooms.get(msg.room);
+      if ((!room || !this.owns(room)) && !(await this.adopt(msg.room))) throw unavailable('it moved to another server');
+      await this.inRoom(msg.room, () => this.command(out, conn, player, msg));
+    } catch (err) {
+      this.fail(out, conn, msg.id, err);
+    }
+    const here = this.route(out, { proc: from, ref });
+    if (here.length > 0) this.outlet?.(here);
+  }
+
+  /**
+   * Several processes: announces the rooms changed here, sends each other process the deliveries
+   * for its sockets (with `ack`'s ref to the process awaiting a forwarded command's answer), and
+   * returns this process's own.
+   */
+  private route(out: Outbox, ack?: { readonly proc: string; readonly ref: number }): Delivery[] {
+    const peers = this.peers;
+    if (!peers) return out;
+    for (const room of this.dirty) {
+      const body: PeerMessage = { t: 'room', state: { ...room.state }, spectators: [...room.spectators], outcome: room.outcome };
+      peers.publish(body);
+    }
+    this.dirty.clear();
+    const here: Delivery[] = [];
+    const there = new Map<string, Delivery[]>();
+    if (ack) there.set(ack.proc, []);
+    for (const d of out) {
+      const mine: ConnId[] = [];
+      const theirs = new Map<string, ConnId[]>();
+      for (const c of d.to) {
+        const proc = this.addresses.has(c) ? undefined : this.lobby.procOf(c);
+        if (proc === undefined) mine.push(c);
+        else theirs.set(proc, [...(theirs.get(proc) ?? []), c]);
+      }
+      if (mine.length > 0) here.push(mine.length === d.to.length ? d : { to: mine, message: d.message });
+      for (const [proc, to] of theirs) there.set(proc, [...(there.get(proc) ?? []), { to, message: d.message }]);
+    }
+    for (const [proc, deliveries] of there) {
+      const body: PeerMessage = { t: 'out', ...(ack?.proc === proc ? { ref: ack.ref } : {}), deliveries };
+      peers.send(proc, body).catch((err: unknown) => this.log(`to process ${proc}: ${(err as Error).message}`));
+    }
+    return here;
+  }
+
+  /** A message from another process, checked; a malformed one is logged and dropped. */
+  private fromPeer(from: string, body: unknown): void {
+    const parsed = v.safeParse(PeerMessageSchema, body);
+    if (!parsed.success) {
+      this.log(`dropped a malformed message from process ${from}: ${parsed.issues[0]?.message ?? 'invalid'}`);
+      return;
+    }
+    const m = parsed.output;
+    const failed = (err: unknown) => this.log(`message ${m.t} from process ${from}: ${(err as Error).stack ?? String(err)}`);
+    switch (m.t) {
+      case 'cmd':
+        void this.remoteCommand(from, m.ref, m.conn, m.player, m.msg).catch(failed);
+        return;
+      case 'out': {
+        const deliveries = m.deliveries as unknown as Delivery[];
+        const waiting = m.ref === undefined ? undefined : this.forwarded.get(m.ref);
+        if (waiting) waiting(deliveries);
+        else this.outlet?.(deliveries);
+        return;
+      }
+      case 'room':
+        this.mirror(from, m.state as unknown as RoomState, m.spectators, m.outcome as Room['outcome']);
+        return;
+      case 'attach': {
+        const back = this.lobby.attach(m.conn, m.player, from);
+        if (back) this.lobbyChanged = true;
+        const out: Outbox = [];
+        void this.arrived(out, m.conn, m.player, back).then(() => this.emit(out), failed);
+        return;
+      }
+      case 'detach': {
+        const out: Outbox = [];
+        this.departed(out, m.conn);
+        this.emit(out);
+        return;
+      }
+      case 'rename': {
+        this.lobby.rename(m.player);
+        this.lobbyChanged = true;
+        const out: Outbox = [];
+        void this.renamedInRooms(out, m.player).then(() => this.emit(out), failed);
+        return;
+      }
+    }
+  }
+
+  /** A room as its owner committed it: this process's mirror of it follows (never backwards). */
+  private mirror(from: string, state: RoomState, spectators: readonly ConnId[], outcome: Room['outcome']): void {
+    let room = this.lobby.rooms.get(state.id);
+    if (!room) {
+      if (state.status === 'closed') return;
+      room = this.addRoom(new Room(state));
+    } else {
+      if (state.stateId < room.state.stateId) return;
+      // Another process took the room over (this one's lease lapsed in a stall): it steps down.
+      if (room.owner === this.peers!.self) this.stepDown(room);
+      room.state = state;
+      this.index(room);
+    }
+    room.owner = from;
+    room.outcome = outcome;
+    for (const c of room.spectators) this.watching.get(c)?.delete(state.id);
+    room.spectators.clear();
+    for (const c of spectators) {
+      room.spectators.add(c);
+      let set = this.watching.get(c);
+      if (!set) this.watching.set(c, (set = new Set()));
+      set.add(state.id);
+    }
+    if (state.computer) this.computerIds.add(state.computer.id);
+    if (state.status === 'closed') this.forget(room);
+    this.lobbyChanged = true;
+  }
+
+  private stepDown(room: Room): void {
+    room.owner = undefined;
+    clearTimeout(room.thinking?.timer);
+    room.thinking = null;
+    this.peers?.release(room.state.id);
+  }
+
+  /** A lease this process could not renew: the room is another's (or nobody's, till adopted). */
+  private lost(id: string): void {
+    const room = this.lobby.rooms.get(id);
+    if (room && room.owner === this.peers?.self) this.stepDown(room);
+  }
+
+  /** A dead process's sockets leave presence (their players' seat holds start). */
+  private peerDead(proc: string): void {
+    this.log(`process ${proc} is gone: its sockets leave, its rooms are taken over`);
+    const out: Outbox = [];
+    for (const conn of this.lobby.connsOf(proc)) this.departed(out, conn);
+    for (const room of this.lobby.rooms.values()) if (room.owner === proc) room.owner = undefined;
+    this.emit(out);
+  }
+
+  /** This process had been taken for dead: its sockets are told again. */
+  private revived(): void {
+    for (const conn of this.addresses.keys()) {
+      const player = this.lobby.playerOf(conn);
+      if (!player) continue;
+      this.peers!.joined(conn, player);
+      this.peers!.publish({ t: 'attach', conn, player });
+    }
+  }
+
   private room(id: string): Room {
     const room = this.lobby.rooms.get(id);
     if (!room || room.state.status === 'closed') throw new ServiceError('no-room', `there is no room ${id}`);
@@ -1060,6 +1411,10 @@ export class GameService {
     return { type: 'lobby', ...re(id), rooms, more, online: this.lobby.online() };
   }
 
+}
+
+function unavailable(why: string): ServiceError {
+  return new ServiceError('unavailable', `the room cannot be reached: ${why}; try again`);
 }
 
 function tooManyRooms(): ServiceError {

@@ -21,6 +21,8 @@ export interface BindingOptions {
   readonly perAddress: AddressCap;
   /** Bytes held unsent for one socket beyond which it is dropped (it may reconnect and resume). */
   readonly maxBufferedBytes: number;
+  /** Connection ids unique across processes (undefined: none to hand right now); default: counted here. */
+  readonly nextConnId?: () => number | undefined;
 }
 
 /** How long a socket closed by the server has to answer the close before it is cut. */
@@ -88,8 +90,12 @@ export function bindWebSocket(wss: WebSocketServer, service: GameService, option
 
   wss.on('connection', (socket, req) => {
     const remote = req.socket.remoteAddress ?? '';
+    const id = options.nextConnId ? options.nextConnId() : nextId++;
+    if (id === undefined) {
+      socket.close(1013, 'try again later');
+      return;
+    }
     const release = options.perAddress.add(remote);
-    const id = nextId++;
     service.open(id, remote);
     const conn: Conn = { socket, queue: Promise.resolve(), bucket: new TokenBucket(RATE_PER_SECOND, RATE_BURST, Date.now()), missedPings: 0, welcomed: false };
     conn.helloTimer = helloDeadline(conn, options.helloMs);

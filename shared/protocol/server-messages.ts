@@ -114,6 +114,8 @@ export type ErrorCode =
   | 'bad-shot'
   | 'miscue'
   | 'internal'
+  // Several processes (docs/scale.md): the room's process did not answer or is being replaced; try again.
+  | 'unavailable'
   // The referees' own codes (shared/rules RuleError), passed through.
   | 'game-over'
   | 'wrong-player'
