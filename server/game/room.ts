@@ -61,6 +61,8 @@ export class Room {
   timersQueued = false;
   /** Several processes: the process that owns the room (runs its commands and clocks); undefined: not known. */
   owner: string | undefined = undefined;
+  /** Several processes: what the owner last announced of the room (its summary), so that a shot is not announced. */
+  announced = '';
 
   constructor(public state: RoomState) {}
 }

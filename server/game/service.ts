@@ -1085,6 +1085,7 @@ export class GameService {
         room.outcome = state.status === 'over' && state.matchId !== null ? outcomeOf(await this.store.matchResult(state.matchId)) : null;
         room.owner = peers.self;
         room.thinking = null;
+        room.announced = ''; // the new owner is announced, whatever the summary
         if (room.state.computer) this.computerIds.add(room.state.computer.id);
         this.touched(room);
         this.lobbyChanged = true;
@@ -1177,7 +1178,13 @@ export class GameService {
     const peers = this.peers;
     if (!peers) return out;
     for (const room of this.dirty) {
-      const body: PeerMessage = { t: 'room', state: { ...room.state }, spectators: [...room.spectators], outcome: room.outcome };
+      // Only what the other processes read of a room not theirs (the lobby, seats, spectators) is
+      // announced: a shot that changes none of it costs no message to every process.
+      const s = room.state;
+      const summary = JSON.stringify([s.status, s.seats, s.left, s.private, [...room.spectators]]);
+      if (summary === room.announced) continue;
+      room.announced = summary;
+      const body: PeerMessage = { t: 'room', state: { ...s }, spectators: [...room.spectators], outcome: room.outcome };
       peers.publish(body);
     }
     this.dirty.clear();
