@@ -2,7 +2,7 @@
 // processes. Skips with a message without redis-server, unless BAIZE_REQUIRE_REDIS=1.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { CHAT_PER_PLAYER, CHAT_WINDOW_S } from '../../shared/protocol/index.ts';
-import { connectRedis, RedisBus, RedisChatLimit, RedisConnIds, RedisRoomLeases, KEYS, type RedisClient } from '../../server/cluster/index.ts';
+import { ClusterNode, connectRedis, RedisBus, RedisChatLimit, RedisConnIds, RedisRegistry, RedisRoomLeases, KEYS, type RedisClient } from '../../server/cluster/index.ts';
 import { chatLimitContract, connIdsContract, leaseContract } from '../contract/cluster.contract.ts';
 import { redisAvailable, startRedis, type RedisServer } from '../support/redis.ts';
 
@@ -82,6 +82,66 @@ describe.runIf(redisAvailable())('cluster pieces over Redis', () => {
       await until(() => got.length === 1);
       await new Promise((r) => setTimeout(r, 50));
       expect(got).toEqual(['ok']);
+    });
+  });
+
+  describe('ClusterNode', () => {
+    const fast = { beatMs: 50, deadMs: 300, leaseMs: 300 };
+
+    it('passes messages, sees the others alive, and finds a silent process dead with its sockets gone', async () => {
+      await c1.sendCommand(['FLUSHALL']);
+      const a = await ClusterNode.start(server.url, { processId: 'na', timing: fast });
+      const b = await ClusterNode.start(server.url, { processId: 'nb', timing: fast });
+      closers.push(() => a.close(), () => b.close());
+      const heard: string[] = [];
+      b.onMessage((from, body) => heard.push(`${from}:${JSON.stringify(body)}`));
+      expect(await a.send('nb', { x: 1 })).toBe(true);
+      a.publish({ y: 2 });
+      expect(await a.send('nobody', { z: 3 })).toBe(false);
+      await until(() => heard.length === 2);
+      expect(heard).toEqual(['na:{"x":1}', 'na:{"y":2}']);
+      await until(() => b.alive('na'));
+      expect(a.nextConnId()).not.toBe(b.nextConnId());
+
+      // A process that beat once, with a socket listed, then fell silent: each of the others reports
+      // it dead once (whichever removes its entry first), and its entry and sockets are gone.
+      const registry = new RedisRegistry(c2);
+      await registry.beat('ghost', Date.now());
+      await registry.joined('ghost', 7, { id: '1', name: 'Gone' });
+      await until(() => a.alive('ghost') && b.alive('ghost'));
+      expect((await b.presence()).filter((e) => e.proc === 'ghost')).toEqual([{ proc: 'ghost', conn: 7, player: { id: '1', name: 'Gone' } }]);
+      const dead: string[] = [];
+      const deadToA: string[] = [];
+      b.onDead((p) => dead.push(p));
+      a.onDead((p) => deadToA.push(p));
+      await until(() => dead.includes('ghost') && deadToA.includes('ghost'));
+      await new Promise((r) => setTimeout(r, 200));
+      expect(dead.filter((p) => p === 'ghost')).toHaveLength(1);
+      expect(b.alive('ghost')).toBe(false);
+      expect(await registry.presence(['ghost'])).toEqual([]);
+      expect((await registry.processes()).has('ghost')).toBe(false);
+
+      // A process that leaves is gone for the others too, and its leases are free at once.
+      expect(await a.acquire('room-1')).toBe(true);
+      await a.close();
+      await until(() => dead.includes('na'));
+      expect(await b.acquire('room-1')).toBe(true);
+    });
+
+    it('renews its leases, and reports one another process took', async () => {
+      await c1.sendCommand(['FLUSHALL']);
+      const a = await ClusterNode.start(server.url, { processId: 'la', timing: fast });
+      closers.push(() => a.close());
+      const lost: string[] = [];
+      a.onLost((room) => lost.push(room));
+      expect(await a.acquire('kept')).toBe(true);
+      expect(await a.acquire('taken')).toBe(true);
+      await new Promise((r) => setTimeout(r, 700)); // past the lease's 300 ms: renewed meanwhile
+      expect(await a.ownerOf('kept')).toBe('la');
+      await c2.sendCommand(['SET', KEYS.lease('taken'), 'someone-else']);
+      await until(() => lost.includes('taken'));
+      expect(lost).toEqual(['taken']);
+      expect(await a.ownerOf('kept')).toBe('la');
     });
   });
 
