@@ -34,6 +34,7 @@ import * as v from 'valibot';
 import type { Point } from '../../shared/rules/index.ts';
 import type { Peers } from '../cluster/index.ts';
 import { PeerMessageSchema, type PeerMessage } from './peer-messages.ts';
+import { splitDeliveries } from './split-deliveries.ts';
 
 export type { ConnId } from './lobby.ts';
 
@@ -1188,20 +1189,9 @@ export class GameService {
       peers.publish(body);
     }
     this.dirty.clear();
-    const here: Delivery[] = [];
-    const there = new Map<string, Delivery[]>();
-    if (ack) there.set(ack.proc, []);
-    for (const d of out) {
-      const mine: ConnId[] = [];
-      const theirs = new Map<string, ConnId[]>();
-      for (const c of d.to) {
-        const proc = this.addresses.has(c) ? undefined : this.lobby.procOf(c);
-        if (proc === undefined) mine.push(c);
-        else theirs.set(proc, [...(theirs.get(proc) ?? []), c]);
-      }
-      if (mine.length > 0) here.push(mine.length === d.to.length ? d : { to: mine, message: d.message });
-      for (const [proc, to] of theirs) there.set(proc, [...(there.get(proc) ?? []), { to, message: d.message }]);
-    }
+    const { here, there } = splitDeliveries(out, (c) => (this.addresses.has(c) ? undefined : this.lobby.procOf(c)));
+    // The process awaiting a forwarded command's answer gets its ref even with nothing to deliver.
+    if (ack && !there.has(ack.proc)) there.set(ack.proc, []);
     for (const [proc, deliveries] of there) {
       const body: PeerMessage = { t: 'out', ...(ack?.proc === proc ? { ref: ack.ref } : {}), deliveries };
       peers.send(proc, body).catch((err: unknown) => this.log(`to process ${proc}: ${(err as Error).message}`));

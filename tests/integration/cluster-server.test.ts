@@ -8,7 +8,7 @@ import pg from 'pg';
 import { afterAll, afterEach, beforeAll, describe, expect, it } from 'vitest';
 import { connectRedis } from '../../server/cluster/index.ts';
 import type { GameKindName, ServerMessage } from '../../shared/protocol/index.ts';
-import { replayMatch, type MatchRecord } from '../../shared/rules/index.ts';
+import { achievements, replayMatch, type MatchRecord } from '../../shared/rules/index.ts';
 import { ask, connect, playTurn, until, wsUrl, type Seat } from '../support/game-clients.ts';
 import { postgresAvailable, startPostgres, type PostgresServer } from '../support/postgres.ts';
 import { redisAvailable, startRedis, type RedisServer } from '../support/redis.ts';
@@ -145,6 +145,12 @@ describe.runIf(redisAvailable() && postgresAvailable())('three processes over Re
       const replayed = replayMatch(record);
       expect(replayed.shots.map((x) => x.hash)).toEqual(seen);
       expect(replayed.game).toEqual(final.game);
+      // The records the match set are those its replay shows, each written once.
+      const stored = await query<{ player: string; value: number }>('SELECT player_id::text AS player, value FROM records WHERE match_id = $1 ORDER BY player_id, value', [final.view!.match]);
+      const expected = achievements(record.start, replayed.games)
+        .map((x) => ({ player: x.player, value: x.value }))
+        .sort((x, y) => Number(x.player) - Number(y.player) || x.value - y.value);
+      expect(stored).toEqual(expected);
     }
     // One result per match, and each rated one counted once in both players' ratings.
     const matches = tables.map((t) => t.a.rooms.get(t.room)!.view!.match!);
