@@ -214,6 +214,28 @@ describe.runIf(redisAvailable() && postgresAvailable())('three processes over Re
     void p3;
   }, 120_000);
 
+  it('hands the rooms of a process stopped with SIGTERM to another within seconds', async () => {
+    url = await db.database('rolling');
+    await start(2);
+    const [p1, p2] = procs as [ServerProcess, ServerProcess];
+    const a = await seat(p1, { name: 'Leaving-side' });
+    const created = await ask(a, { type: 'create', kind: 'eightball' });
+    if (created.type !== 'room') throw new Error(JSON.stringify(created));
+    const room = created.room.id;
+    const b = await seat(p2, { name: 'Staying-side' });
+    await ask(b, { type: 'join', room });
+    const a2 = await seat(p2, { token: a.token });
+    await until(a2, room, (r) => r.status === 'playing');
+    const stoppedAt = Date.now();
+    expect(await p1.stop('SIGTERM')).toBe(0);
+    const onTurn = a2.rooms.get(room)!.game!.turn === a2.player.id ? a2 : b;
+    const shot = await shoot(onTurn, room);
+    const ms = Date.now() - stoppedAt;
+    expect(shot.stateId).toBe(2);
+    // The leases given up, no waiting for them to lapse (6 s).
+    expect(ms).toBeLessThan(4_000);
+  }, 60_000);
+
   it('holds the per-player limit of open rooms across processes, whatever junk is on the bus', async () => {
     url = await db.database('limits');
     await start(3);
