@@ -11,8 +11,8 @@
 //
 // With several processes (options.peers, docs/scale.md) each room has one owner process: a
 // command for a room owned elsewhere is forwarded there and its answer awaited; only the owner
-// commits a room and runs its clocks, and announces each committed state so that every process's
-// lobby mirrors it; deliveries for another process's sockets are sent to that process.
+// commits a room and runs its clocks, and announces the room's summary when it changes so that
+// every process's lobby mirrors it; deliveries for another process's sockets go to that process.
 import { randomBytes } from 'node:crypto';
 import type { ClientMessage, PlayerRef, ServerMessage } from '../../shared/protocol/index.ts';
 import { LOBBY_MAX_ROOMS, LOBBY_UPDATE_MS, MAX_OPEN_ROOMS_PER_PLAYER, MAX_TABS_PER_PLAYER } from '../../shared/protocol/index.ts';

@@ -236,6 +236,53 @@ describe.runIf(redisAvailable() && postgresAvailable())('three processes over Re
     expect(ms).toBeLessThan(4_000);
   }, 60_000);
 
+  it('survives a stalled owner: another takes the room, the stalled one steps down and plays on through it', async () => {
+    url = await db.database('stalled');
+    await start(2);
+    const [p1, p2] = procs as [ServerProcess, ServerProcess];
+    const a = await seat(p1, { name: 'Stalled-side' });
+    const created = await ask(a, { type: 'create', kind: 'nineball', raceTo: 3 });
+    if (created.type !== 'room') throw new Error(JSON.stringify(created));
+    const room = created.room.id;
+    const b = await seat(p2, { name: 'Live-side' });
+    await ask(b, { type: 'join', room });
+    await until(a, room, (r) => r.status === 'playing');
+    // Play until it is b's turn, so that b can shoot while p1 is frozen.
+    while (a.rooms.get(room)!.game!.turn === a.player.id) {
+      const shot = await shoot(a, room);
+      await until(b, room, (r) => r.stateId >= shot.stateId);
+    }
+    const before = a.rooms.get(room)!.stateId;
+    await until(b, room, (r) => r.stateId === before);
+
+    // p1 (the owner) freezes past the lease: p2 takes the room and b plays on.
+    p1.child.kill('SIGSTOP');
+    let frozenShot: string;
+    try {
+      const first = await shoot(b, room, 20_000);
+      expect(first.stateId).toBe(before + 1);
+      frozenShot = first.outcome.hash;
+    } finally {
+      p1.child.kill('SIGCONT');
+    }
+    // p1 wakes: it lists its socket again and gives the room up; a plays through it, and the
+    // match goes on, every move once.
+    await until(a, room, (r) => r.stateId >= before + 1, 15_000);
+    await playOut(a, b, room);
+    expect(b.rooms.get(room)!.status).toBe('over');
+    const seen = shotsIn(b, room).map((m) => m.outcome.hash);
+    // The shot made while a's process was frozen reached a as the room's state when it woke (as
+    // after a reconnect); every other shot as a shot.
+    expect(shotsIn(a, room).map((m) => m.outcome.hash)).toEqual(seen.filter((h) => h !== frozenShot));
+    expect(a.rooms.get(room)!.game).toEqual(b.rooms.get(room)!.game);
+    const match = b.rooms.get(room)!.view!.match!;
+    const record = (await (await fetch(`${p2.url}/api/matches/${match}`)).json()) as MatchRecord;
+    expect(replayMatch(record).shots.map((x) => x.hash)).toEqual(seen);
+    const actions = await query<{ seq: number }>('SELECT seq FROM match_actions WHERE match_id = $1 ORDER BY seq', [match]);
+    expect(actions.map((x) => x.seq)).toEqual(Array.from({ length: actions.length }, (_, i) => i + 2));
+    expect(p1.child.exitCode).toBeNull();
+  }, 120_000);
+
   it('holds the per-player limit of open rooms across processes, whatever junk is on the bus', async () => {
     url = await db.database('limits');
     await start(3);
