@@ -129,38 +129,31 @@ export function readConfig(env: NodeJS.ProcessEnv = process.env): Config {
   };
 }
 
-/**
- * BAIZE_DATABASE_URL: a postgres:// (or postgresql://) URL with a host; unset or empty means the
- * SQLite file. The error never repeats the value, which may hold a password.
- */
+/** BAIZE_DATABASE_URL: a postgres:// (or postgresql://) URL; unset or empty means the SQLite file. */
 function databaseUrl(env: NodeJS.ProcessEnv): string | undefined {
-  const text = env.BAIZE_DATABASE_URL?.trim();
-  if (text === undefined || text === '') return undefined;
-  let url: URL;
-  try {
-    url = new URL(text);
-  } catch {
-    throw new RangeError('BAIZE_DATABASE_URL must be a URL such as postgres://user:password@host:5432/baize (this one does not parse)');
-  }
-  if (url.protocol !== 'postgres:' && url.protocol !== 'postgresql:') {
-    throw new RangeError(`BAIZE_DATABASE_URL must start with postgres:// or postgresql://, got ${url.protocol}//`);
-  }
-  if (url.hostname === '') throw new RangeError('BAIZE_DATABASE_URL must name a host, as in postgres://user:password@host:5432/baize');
-  return text;
+  return serviceUrl(env, 'BAIZE_DATABASE_URL', ['postgres:', 'postgresql:'], 'postgres://user:password@host:5432/baize');
 }
 
-/** BAIZE_REDIS_URL: a redis:// (or rediss://) URL with a host; unset or empty means one process. Never echoed (a password). */
+/** BAIZE_REDIS_URL: a redis:// (or rediss://) URL; unset or empty means one process. */
 function redisUrl(env: NodeJS.ProcessEnv): string | undefined {
-  const text = env.BAIZE_REDIS_URL?.trim();
+  return serviceUrl(env, 'BAIZE_REDIS_URL', ['redis:', 'rediss:'], 'redis://host:6379');
+}
+
+/**
+ * A URL naming a host with one of two schemes, or undefined when unset or empty. The error never
+ * repeats the value, which may hold a password.
+ */
+function serviceUrl(env: NodeJS.ProcessEnv, name: string, schemes: readonly [string, string], example: string): string | undefined {
+  const text = env[name]?.trim();
   if (text === undefined || text === '') return undefined;
   let url: URL;
   try {
     url = new URL(text);
   } catch {
-    throw new RangeError('BAIZE_REDIS_URL must be a URL such as redis://host:6379 (this one does not parse)');
+    throw new RangeError(`${name} must be a URL such as ${example} (this one does not parse)`);
   }
-  if (url.protocol !== 'redis:' && url.protocol !== 'rediss:') throw new RangeError(`BAIZE_REDIS_URL must start with redis:// or rediss://, got ${url.protocol}//`);
-  if (url.hostname === '') throw new RangeError('BAIZE_REDIS_URL must name a host, as in redis://host:6379');
+  if (!schemes.includes(url.protocol)) throw new RangeError(`${name} must start with ${schemes[0]}// or ${schemes[1]}//, got ${url.protocol}//`);
+  if (url.hostname === '') throw new RangeError(`${name} must name a host, as in ${example}`);
   return text;
 }
 

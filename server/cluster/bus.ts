@@ -52,30 +52,6 @@ function dispatch(handlers: BusHandler[], m: BusMessage): void {
   }
 }
 
-/** One process: commands to itself, deliveries to itself, asynchronously as over Redis. */
-export class MemoryBus implements Bus {
-  private readonly commands: BusHandler[] = [];
-  private readonly deliveries: BusHandler[] = [];
-  constructor(private readonly processId: string) {
-    requireId('processId', processId);
-  }
-  async command(toProcess: string, body: unknown): Promise<number> {
-    if (requireId('toProcess', toProcess) !== this.processId) return 0;
-    queueMicrotask(() => dispatch(this.commands, { from: this.processId, body }));
-    return 1;
-  }
-  async deliver(body: unknown): Promise<void> {
-    queueMicrotask(() => dispatch(this.deliveries, { from: this.processId, body }));
-  }
-  onCommand(handler: BusHandler): void {
-    this.commands.push(handler);
-  }
-  onDelivery(handler: BusHandler): void {
-    this.deliveries.push(handler);
-  }
-  async close(): Promise<void> {}
-}
-
 export class RedisBus implements Bus {
   private readonly commands: BusHandler[] = [];
   private readonly deliveries: BusHandler[] = [];

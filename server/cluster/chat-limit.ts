@@ -9,6 +9,8 @@ import { command, type RedisClient } from './redis.ts';
 export interface ChatLimit {
   /** 0 when the line is let through (and counted), else how many ms to wait (nothing counted). */
   take(player: string, now: number): Promise<number>;
+  /** Forgets the players whose allowance has filled up again (Redis lets its keys expire instead). */
+  prune?(now: number): void;
 }
 
 export class MemoryChatLimit implements ChatLimit {
@@ -23,6 +25,9 @@ export class MemoryChatLimit implements ChatLimit {
     if (wait > 0) return wait;
     b.take(now);
     return 0;
+  }
+  prune(now: number): void {
+    for (const [player, b] of this.buckets) if (b.full(now)) this.buckets.delete(player);
   }
 }
 

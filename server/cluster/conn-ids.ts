@@ -7,13 +7,6 @@ export interface ConnIds {
   next(): Promise<number>;
 }
 
-export class MemoryConnIds implements ConnIds {
-  private last = 0;
-  async next(): Promise<number> {
-    return ++this.last;
-  }
-}
-
 export class RedisConnIds implements ConnIds {
   private nextId = 0;
   private end = 0; // exclusive

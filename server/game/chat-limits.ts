@@ -1,37 +1,37 @@
 // Chat limits: per player across all their tabs, and per room, so that neither many tabs nor many
 // players can flood a room's spectators. A line is let through only when both have room for it.
-import { CHAT_PER_PLAYER, CHAT_PER_ROOM, CHAT_WINDOW_S } from '../../shared/protocol/index.ts';
+import { CHAT_PER_ROOM, CHAT_WINDOW_S } from '../../shared/protocol/index.ts';
 import { TokenBucket } from '../token-bucket.ts';
 import { ServiceError } from './errors.ts';
-import type { ChatLimit } from '../cluster/index.ts';
+import { MemoryChatLimit, type ChatLimit } from '../cluster/index.ts';
 
 export class ChatLimits {
-  private readonly players = new Map<string, TokenBucket>();
   private readonly rooms = new Map<string, TokenBucket>();
+
+  /** `players`: each player's allowance, in this process or (several processes) one shared in Redis. */
+  constructor(private readonly players: ChatLimit = new MemoryChatLimit()) {}
 
   /**
    * Counts a line from `player` in `room`, or refuses it with 'rate-limited' and how long to wait.
-   * With several processes the player's allowance is `shared` (one bucket in Redis); the room's
-   * stays here, as a room's lines all pass its owner, one at a time.
+   * The room's allowance stays here, as a room's lines all pass its owner, one at a time.
    */
-  async take(player: string, room: string, now: number, shared?: ChatLimit): Promise<void> {
+  async take(player: string, room: string, now: number): Promise<void> {
     const theirs = bucket(this.rooms, room, CHAT_PER_ROOM, now);
-    const mine = shared ? undefined : bucket(this.players, player, CHAT_PER_PLAYER, now);
     const roomWait = theirs.waitMs(now);
-    // The shared bucket counts the line as it answers, so it is asked only when the room has room.
-    const myWait = mine ? mine.waitMs(now) : roomWait > 0 ? 0 : await shared!.take(player, now);
+    // The player's allowance counts the line as it answers, so it is asked only when the room has room.
+    const myWait = roomWait > 0 ? 0 : await this.players.take(player, now);
     const wait = Math.max(myWait, roomWait);
     if (wait > 0) {
       const who = myWait > 0 ? 'you are sending messages too fast' : 'this room is receiving messages too fast';
       throw new ServiceError('rate-limited', `${who}; wait ${Math.ceil(wait / 1000)} s`);
     }
-    mine?.take(now);
     theirs.take(now);
   }
 
   /** Forgets the buckets that have filled up again, so that the maps hold only recent talkers. */
   prune(now: number): void {
-    for (const map of [this.players, this.rooms]) for (const [key, b] of map) if (b.full(now)) map.delete(key);
+    for (const [key, b] of this.rooms) if (b.full(now)) this.rooms.delete(key);
+    this.players.prune?.(now);
   }
 }
 

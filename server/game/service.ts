@@ -123,7 +123,7 @@ export class GameService {
   private lobbySentAt = -Infinity;
   /** Rooms whose spectators changed: one `room` each to their members at the next tick. */
   private readonly roomsChanged = new Set<Room>();
-  private readonly chatLimits = new ChatLimits();
+  private readonly chatLimits: ChatLimits;
   private chatPrunedAt = 0;
   /** Where deliveries made outside a command go (the computer's moves); set by the binding. */
   private outlet: ((deliveries: Delivery[]) => void) | undefined;
@@ -167,6 +167,7 @@ export class GameService {
     this.log = options.log ?? ((line) => console.error(line));
     this.lobby = new Lobby(this.now());
     this.guestLimit = options.guestsPerAddress === undefined ? undefined : new GuestLimit(options.guestsPerAddress);
+    this.chatLimits = new ChatLimits(options.peers?.chat);
     for (const { state, result } of restored) {
       const room = this.addRoom(new Room(state));
       room.outcome = outcomeOf(result);
@@ -284,9 +285,13 @@ export class GameService {
     const out: Outbox = [];
     const now = this.now();
     const pass = this.housekeeping(now);
-    const due: Promise<void>[] = [this.adoptOrphans()];
+    const due: Promise<void>[] = [];
+    const orphans: Room[] = [];
     for (const room of this.lobby.rooms.values()) {
-      if (!this.owns(room)) continue;
+      if (!this.owns(room)) {
+        if (this.orphan(room) && orphans.length < ADOPT_PER_TICK) orphans.push(room);
+        continue;
+      }
       if (room.state.status === 'playing') this.computerTurn(room);
       if (room.timersQueued || !this.timersDue(room, now)) continue;
       room.timersQueued = true;
@@ -306,7 +311,7 @@ export class GameService {
         }),
       );
     }
-    await Promise.all([pass, ...due]);
+    await Promise.all([pass, this.adoptOrphans(orphans), ...due]);
     for (const room of [...this.roomsChanged]) if (room.state.status !== 'closed') this.broadcastRoom(out, room);
     this.roomsChanged.clear();
     const at = this.now();
@@ -451,7 +456,7 @@ export class GameService {
       case 'chat': {
         const room = this.room(msg.room);
         if (!this.seated(room, player.id) && !room.spectators.has(conn)) throw new ServiceError('not-seated', 'only the players and spectators of a room may chat there');
-        await this.chatLimits.take(player.id, room.state.id, this.now(), this.peers?.chat);
+        await this.chatLimits.take(player.id, room.state.id, this.now());
         this.send(out, this.members(room), { type: 'chat', room: room.state.id, from: player, text: msg.text, at: this.now() });
         return;
       }
@@ -1102,16 +1107,15 @@ export class GameService {
     });
   }
 
+  /** A room no live process owns (several processes only): its clocks stand still until one adopts it. */
+  private orphan(room: Room): boolean {
+    return this.peers !== undefined && (room.owner === undefined || !this.peers.alive(room.owner));
+  }
+
   /** Rooms whose owner is unknown or dead, taken over (a few a tick) so that their clocks run again. */
-  private async adoptOrphans(): Promise<void> {
+  private async adoptOrphans(orphans: readonly Room[]): Promise<void> {
     const peers = this.peers;
     if (!peers) return;
-    const orphans: Room[] = [];
-    for (const room of this.lobby.rooms.values()) {
-      if (room.owner !== undefined && peers.alive(room.owner)) continue;
-      orphans.push(room);
-      if (orphans.length >= ADOPT_PER_TICK) break;
-    }
     await Promise.all(
       orphans.map(async (room) => {
         try {
@@ -1216,7 +1220,7 @@ export class GameService {
         const deliveries = m.deliveries as unknown as Delivery[];
         const waiting = m.ref === undefined ? undefined : this.forwarded.get(m.ref);
         if (waiting) waiting(deliveries);
-        else this.outlet?.(deliveries);
+        else this.emit(deliveries);
         return;
       }
       case 'room':
@@ -1291,7 +1295,7 @@ export class GameService {
     this.log(`process ${proc} is gone: its sockets leave, its rooms are taken over`);
     const out: Outbox = [];
     for (const conn of this.lobby.connsOf(proc)) this.departed(out, conn);
-    for (const room of this.lobby.rooms.values()) if (room.owner === proc) room.owner = undefined;
+    // Its rooms need nothing here: a dead owner makes them orphans, adopted at the next ticks.
     this.emit(out);
   }
 

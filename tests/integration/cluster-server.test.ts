@@ -61,6 +61,17 @@ describe.runIf(redisAvailable() && postgresAvailable())('three processes over Re
     seats.push(s);
     return s;
   };
+  /** A room made by a new player on `makerOn` and joined by one on `joinerOn`: play has started. */
+  const table = async (makerOn: ServerProcess, joinerOn: ServerProcess, kind: GameKindName, names: [string, string], raceTo?: number) => {
+    const a = await seat(makerOn, { name: names[0] });
+    const created = await ask(a, { type: 'create', kind, ...(raceTo === undefined ? {} : { raceTo }) });
+    if (created.type !== 'room') throw new Error(JSON.stringify(created));
+    const room = created.room.id;
+    const b = await seat(joinerOn, { name: names[1] });
+    await ask(b, { type: 'join', room });
+    await until(a, room, (r) => r.status === 'playing');
+    return { a, b, room };
+  };
   const query = async <R extends pg.QueryResultRow>(text: string, values: unknown[] = []): Promise<R[]> => {
     const c = new pg.Client({ connectionString: url });
     await c.connect();
@@ -168,15 +179,10 @@ describe.runIf(redisAvailable() && postgresAvailable())('three processes over Re
     url = await db.database('failover');
     await start(3);
     const [p1, p2, p3] = procs as [ServerProcess, ServerProcess, ServerProcess];
-    const a = await seat(p1, { name: 'Owner-side' });
-    const created = await ask(a, { type: 'create', kind: 'nineball', raceTo: 3 });
-    if (created.type !== 'room') throw new Error(JSON.stringify(created));
-    const room = created.room.id;
+    const { a, b, room } = await table(p1, p2, 'nineball', ['Owner-side', 'Other-side'], 3);
+    // Watching before the first shot: the spectator sees every one.
     const s = await seat(p3, { name: 'Watcher' });
     await ask(s, { type: 'watch', room });
-    const b = await seat(p2, { name: 'Other-side' });
-    await ask(b, { type: 'join', room });
-    await until(a, room, (r) => r.status === 'playing');
     await playOut(a, b, room, async (n) => {
       if (n === 3) throw new Error('stop');
     }).catch((err: unknown) => {
@@ -211,19 +217,13 @@ describe.runIf(redisAvailable() && postgresAvailable())('three processes over Re
     const actions = await query<{ seq: number }>('SELECT seq FROM match_actions WHERE match_id = $1 ORDER BY seq', [final.view!.match]);
     expect(actions.map((x) => x.seq)).toEqual(Array.from({ length: actions.length }, (_, i) => i + 2));
     expect(await query('SELECT 1 FROM results WHERE match_id = $1', [final.view!.match])).toHaveLength(1);
-    void p3;
   }, 120_000);
 
   it('hands the rooms of a process stopped with SIGTERM to another within seconds', async () => {
     url = await db.database('rolling');
     await start(2);
     const [p1, p2] = procs as [ServerProcess, ServerProcess];
-    const a = await seat(p1, { name: 'Leaving-side' });
-    const created = await ask(a, { type: 'create', kind: 'eightball' });
-    if (created.type !== 'room') throw new Error(JSON.stringify(created));
-    const room = created.room.id;
-    const b = await seat(p2, { name: 'Staying-side' });
-    await ask(b, { type: 'join', room });
+    const { a, b, room } = await table(p1, p2, 'eightball', ['Leaving-side', 'Staying-side']);
     const a2 = await seat(p2, { token: a.token });
     await until(a2, room, (r) => r.status === 'playing');
     const stoppedAt = Date.now();
@@ -240,13 +240,7 @@ describe.runIf(redisAvailable() && postgresAvailable())('three processes over Re
     url = await db.database('stalled');
     await start(2);
     const [p1, p2] = procs as [ServerProcess, ServerProcess];
-    const a = await seat(p1, { name: 'Stalled-side' });
-    const created = await ask(a, { type: 'create', kind: 'nineball', raceTo: 3 });
-    if (created.type !== 'room') throw new Error(JSON.stringify(created));
-    const room = created.room.id;
-    const b = await seat(p2, { name: 'Live-side' });
-    await ask(b, { type: 'join', room });
-    await until(a, room, (r) => r.status === 'playing');
+    const { a, b, room } = await table(p1, p2, 'nineball', ['Stalled-side', 'Live-side'], 3);
     // Play until it is b's turn, so that b can shoot while p1 is frozen.
     while (a.rooms.get(room)!.game!.turn === a.player.id) {
       const shot = await shoot(a, room);
